@@ -1,0 +1,7 @@
+//! `repro`: regenerates "A Generalized Traction Curve for EHL Contacts" (Jacod, Venner and
+//! Lugt, ASME J. Tribology 2001) from first principles.
+//!
+//! Layers, with one-way dependencies: `cli` (binary) -> [`artefacts`] -> [`solver`] ->
+//! [`physics`]. The numerical kernel does no I/O.
+
+pub mod physics;

@@ -1,0 +1,425 @@
+//! A case: what a user asks to be solved, physically or in Moes groups, and the dimensionless
+//! problem it becomes. The dimensionless numbers (M, L, S-bar, alpha-bar, lambda, kappa, N)
+//! are computed here and nowhere else.
+
+use super::density::{Density, DensityLaw};
+use super::hertz::Hertz;
+use super::lubricant::{LubricantError, LubricantTable};
+use super::rheology::Rheology;
+use super::viscosity::{Viscosity, ViscosityLaw};
+use serde::{Deserialize, Serialize};
+
+/// The physics a case asks for; the solver composes only these.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+pub struct Physics {
+    /// Viscosity-pressure law.
+    pub viscosity: ViscosityLaw,
+    /// Density-pressure law.
+    pub density: DensityLaw,
+    /// Rheology.
+    pub rheology: Rheology,
+}
+
+impl Physics {
+    /// The physics of Figs. 4-7 and of the Appendix case: Roelands, Dowson-Higginson, Eyring.
+    pub fn figs_4_to_7() -> Self {
+        Physics {
+            viscosity: ViscosityLaw::Roelands,
+            density: DensityLaw::DowsonHigginson,
+            rheology: Rheology::Eyring,
+        }
+    }
+}
+
+/// Where the lubricant's `alpha` and `eta0` come from.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum LubricantSpec {
+    /// A lubricant of Table 1 (`cases/lubricants.toml`) at a temperature.
+    Named {
+        /// Name in the table.
+        lubricant: String,
+        /// Temperature, C.
+        temperature_c: f64,
+    },
+    /// Properties given directly.
+    Given {
+        /// Pressure-viscosity coefficient, 1/Pa.
+        alpha_per_pa: f64,
+        /// Ambient viscosity, Pa s.
+        eta0_pa_s: f64,
+    },
+}
+
+/// A contact given by its physical operating conditions (SI units).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PhysicalCase {
+    /// Lubricant.
+    #[serde(flatten)]
+    pub lubricant: LubricantSpec,
+    /// Maximum Hertzian pressure, Pa.
+    pub ph_pa: f64,
+    /// Mean velocity `u_m = (u1 + u2)/2`, m/s.
+    pub um_m_s: f64,
+    /// Slide-to-roll ratio `S = 2 (u2 - u1) / (u2 + u1)`.
+    pub slip: f64,
+    /// Eyring stress, Pa.
+    pub tau0_pa: f64,
+    /// Reduced radius in the rolling direction, m.
+    pub rx_m: f64,
+    /// Reduced radius across the rolling direction, m.
+    pub ry_m: f64,
+    /// Reduced modulus `E'`, Pa.
+    pub e_prime_pa: f64,
+}
+
+/// A contact given by its Moes groups.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct DimensionlessCase {
+    /// Moes load parameter.
+    pub m: f64,
+    /// Moes lubricant parameter.
+    pub l: f64,
+    /// Dimensionless slip, Eq. (9).
+    pub s_bar: f64,
+    /// Ellipticity ratio `Rx/Ry`.
+    pub d: f64,
+    /// Slide-to-roll ratio: with `S-bar` it fixes `tau0`, hence the scale of the rolling
+    /// friction in `mu-bar` (the Moes groups alone do not).
+    pub slip: f64,
+    /// Ambient viscosity, Pa s: needed only by Roelands.
+    pub eta0_pa_s: Option<f64>,
+    /// Maximum Hertzian pressure, Pa: needed only by Roelands and Dowson-Higginson.
+    pub ph_pa: Option<f64>,
+}
+
+/// How a case is specified.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Spec {
+    /// Physical operating conditions.
+    Physical(PhysicalCase),
+    /// Moes groups.
+    Dimensionless(DimensionlessCase),
+}
+
+/// A case: a specification and the physics to solve it with.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Case {
+    /// Operating conditions.
+    pub spec: Spec,
+    /// Physics.
+    pub physics: Physics,
+}
+
+/// A case that cannot be solved: names the field.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum CaseError {
+    /// A field is out of its physical range.
+    #[error("{field}: {message}")]
+    Field {
+        /// The offending field (flag or case-file key).
+        field: &'static str,
+        /// What is expected.
+        message: String,
+    },
+    /// The lubricant lookup failed.
+    #[error(transparent)]
+    Lubricant(#[from] LubricantError),
+}
+
+fn field(field: &'static str, message: impl Into<String>) -> CaseError {
+    CaseError::Field { field, message: message.into() }
+}
+
+fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
+    if v > 0.0 && v.is_finite() {
+        Ok(v)
+    } else {
+        Err(field(name, format!("must be positive and finite, got {v}")))
+    }
+}
+
+fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError> {
+    if (0.0..=2.0).contains(&s) {
+        Ok(s)
+    } else {
+        Err(field(name, format!("slide-to-roll ratio must lie in [0, 2], got {s}")))
+    }
+}
+
+/// The dimensionless groups of a case (Sec. II and Nomenclature).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Groups {
+    /// Moes load parameter `M`.
+    pub m: f64,
+    /// Moes lubricant parameter `L`.
+    pub l: f64,
+    /// Dimensionless slip `S-bar`, Eq. (9).
+    pub s_bar: f64,
+    /// Ellipticity ratio `D = Rx/Ry`.
+    pub d: f64,
+    /// `alpha-bar = alpha p_H`.
+    pub alpha_bar: f64,
+    /// Speed parameter `lambda = 6 eta0 u_s a / (c^2 p_H)`.
+    pub lambda: f64,
+    /// `kappa = a/b`.
+    pub kappa: f64,
+    /// Eyring parameter `N = lambda p_H^2 K / (6 E' tau0)`.
+    pub n: f64,
+    /// Slide-to-roll ratio `S`.
+    pub slip: f64,
+    /// `c / (Rx sqrt(U))`, `U = eta0 u_s / (E' Rx)`: converts `H = h/c` to Moes units.
+    pub moes_film_scale: f64,
+}
+
+impl Groups {
+    /// Computes every group from the Hertz scales, `eta0 u_s` (Pa m), `alpha` (1/Pa),
+    /// `1/tau0` (1/Pa, zero for an infinite Eyring stress) and `S`.
+    pub fn new(hz: &Hertz, eta0_us: f64, alpha: f64, tau0_inv: f64, slip: f64) -> Self {
+        let u = eta0_us / (hz.e_prime * hz.rx);
+        Groups {
+            m: hz.load / (hz.e_prime * hz.rx * hz.rx) * u.powf(-0.75),
+            l: alpha * hz.e_prime * u.powf(0.25),
+            s_bar: slip * (eta0_us * hz.e_prime / hz.rx).sqrt() * tau0_inv,
+            d: hz.rx / hz.ry,
+            alpha_bar: alpha * hz.ph,
+            lambda: 6.0 * eta0_us * hz.a / (hz.c * hz.c * hz.ph),
+            kappa: hz.kappa,
+            n: eta0_us / (2.0 * hz.c) * tau0_inv,
+            slip,
+            moes_film_scale: hz.c / hz.rx / u.sqrt(),
+        }
+    }
+
+    /// The coefficient of the rolling (Poiseuille) shear stress on the surface,
+    /// `(h/2)(dp/dx)/tau0 = (6 N / lambda) H dP/dX`.
+    pub fn rolling_stress_scale(&self) -> f64 {
+        6.0 * self.n / self.lambda
+    }
+}
+
+/// The dimensionless point-contact problem of Eqs. (1)-(8), what the solver consumes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Problem {
+    /// Dimensionless groups.
+    pub groups: Groups,
+    /// Elliptic integral `K` at `kappa` (the deformation integral's factor `1/(pi K)`).
+    pub ell_k: f64,
+    /// Shape factor `S(kappa)` of Eq. (6).
+    pub shape: f64,
+    /// Viscosity law.
+    pub viscosity: Viscosity,
+    /// Density law.
+    pub density: Density,
+    /// Rheology.
+    pub rheology: Rheology,
+    /// The Hertz scales (physical for a physical case; in units of `Rx`, `E'` for a
+    /// dimensionless one).
+    pub hertz: Hertz,
+}
+
+impl Problem {
+    /// Resolves a case against the lubricant table and checks every field.
+    pub fn from_case(case: &Case, lubricants: &LubricantTable) -> Result<Self, CaseError> {
+        match &case.spec {
+            Spec::Physical(p) => Self::from_physical(p, case.physics, lubricants),
+            Spec::Dimensionless(d) => Self::from_dimensionless(d, case.physics),
+        }
+    }
+
+    fn from_physical(p: &PhysicalCase, physics: Physics, lubs: &LubricantTable) -> Result<Self, CaseError> {
+        let (alpha, eta0) = match &p.lubricant {
+            LubricantSpec::Named { lubricant, temperature_c } => {
+                let s = lubs.state(lubricant, *temperature_c)?;
+                (s.alpha_per_pa, s.eta0_pa_s)
+            }
+            LubricantSpec::Given { alpha_per_pa, eta0_pa_s } => {
+                (positive("alpha", *alpha_per_pa)?, positive("eta0", *eta0_pa_s)?)
+            }
+        };
+        let ph = positive("ph", p.ph_pa)?;
+        let um = positive("um", p.um_m_s)?;
+        let slip = slip_in_range("slip", p.slip)?;
+        let tau0 = positive("tau0", p.tau0_pa)?;
+        let rx = positive("rx", p.rx_m)?;
+        let ry = positive("ry", p.ry_m)?;
+        let e_prime = positive("e-prime", p.e_prime_pa)?;
+        if rx > ry {
+            return Err(field("ry", format!("Rx/Ry must not exceed 1 (kappa in (0, 1]); got Rx = {rx}, Ry = {ry}")));
+        }
+        let hz = Hertz::from_ph(ph, rx, ry, e_prime);
+        let groups = Groups::new(&hz, eta0 * 2.0 * um, alpha, 1.0 / tau0, slip);
+        Ok(Self::assemble(groups, hz, physics, eta0, alpha, ph))
+    }
+
+    fn from_dimensionless(d: &DimensionlessCase, physics: Physics) -> Result<Self, CaseError> {
+        let m = positive("m", d.m)?;
+        let l = positive("l", d.l)?;
+        let ratio = positive("d", d.d)?;
+        if ratio > 1.0 {
+            return Err(field("d", format!("Rx/Ry must lie in (0, 1] (kappa in (0, 1]), got {ratio}")));
+        }
+        if !(d.s_bar >= 0.0 && d.s_bar.is_finite()) {
+            return Err(field("s-bar", format!("must be >= 0, got {}", d.s_bar)));
+        }
+        let slip = slip_in_range("slip", d.slip)?;
+        if d.s_bar > 0.0 && slip == 0.0 {
+            return Err(field("slip", "S-bar > 0 needs a slide-to-roll ratio S > 0"));
+        }
+        // In units Rx = E' = 1 and U = eta0 u_s / (E' Rx) = 1 the load is M and alpha is L;
+        // every dimensionless group is independent of U (Moes' similarity).
+        let hz = Hertz::from_load(m, 1.0, 1.0 / ratio, 1.0);
+        let tau0_inv = if d.s_bar > 0.0 { d.s_bar / slip } else { 0.0 };
+        let groups = Groups::new(&hz, 1.0, l, tau0_inv, slip);
+        let needs_ph = physics.viscosity == ViscosityLaw::Roelands || physics.density == DensityLaw::DowsonHigginson;
+        let ph_pa = match d.ph_pa {
+            Some(v) => positive("ph", v)?,
+            None if needs_ph => {
+                return Err(field("ph", "Roelands and Dowson-Higginson need the physical p_H (Pa) in the dimensionless form"))
+            }
+            None => f64::NAN,
+        };
+        let eta0 = match d.eta0_pa_s {
+            Some(v) => positive("eta0", v)?,
+            None if physics.viscosity == ViscosityLaw::Roelands => {
+                return Err(field("eta0", "Roelands needs the ambient viscosity (Pa s) in the dimensionless form"))
+            }
+            None => f64::NAN,
+        };
+        let mut problem = Self::assemble(groups, hz, physics, eta0, groups.alpha_bar / ph_pa, ph_pa);
+        if physics.viscosity == ViscosityLaw::Barus {
+            problem.viscosity = Viscosity::barus(groups.alpha_bar);
+        }
+        Ok(problem)
+    }
+
+    fn assemble(groups: Groups, hertz: Hertz, physics: Physics, eta0: f64, alpha: f64, ph: f64) -> Self {
+        Problem {
+            groups,
+            ell_k: hertz.ell_k,
+            shape: hertz.shape_factor(),
+            viscosity: match physics.viscosity {
+                ViscosityLaw::Barus => Viscosity::barus(groups.alpha_bar),
+                ViscosityLaw::Roelands => Viscosity::roelands(eta0, alpha, ph),
+            },
+            density: Density::new(physics.density, ph),
+            rheology: physics.rheology,
+            hertz,
+        }
+    }
+
+    /// The physics this problem composes.
+    pub fn physics(&self) -> Physics {
+        Physics { viscosity: self.viscosity.law(), density: self.density.law(), rheology: self.rheology }
+    }
+
+    /// `N S`: the Couette stress argument is `N S eta_bar / H` (Eq. 4).
+    pub fn eyring_n_s(&self) -> f64 {
+        self.groups.n * self.groups.slip
+    }
+
+    /// Characteristic shear stress, Eq. (12): `tau_c = eta_bar(p_H) S-bar / Hc` with `Hc`
+    /// from Eq. (10) and `eta_bar(p_H)` from the case's own viscosity law.
+    pub fn tau_c(&self) -> f64 {
+        self.viscosity.eta_bar(1.0) * self.groups.s_bar / super::film::hc_eq10(self.groups.m, self.groups.l)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    pub(crate) fn worked_case() -> Case {
+        Case {
+            spec: Spec::Physical(PhysicalCase {
+                lubricant: LubricantSpec::Named { lubricant: "mineral-oil-a".into(), temperature_c: 40.0 },
+                ph_pa: 3e9,
+                um_m_s: 12.0,
+                slip: 0.005,
+                tau0_pa: 4e6,
+                rx_m: 1.03875e-2,
+                ry_m: 1.03875e-2,
+                e_prime_pa: 226e9,
+            }),
+            physics: Physics::figs_4_to_7(),
+        }
+    }
+
+    #[test]
+    fn moes_groups_of_the_worked_case() {
+        // Appendix: M = 1738, L = 14.79. We get M = 1738.8: the paper's last digit is
+        // truncated (or its constants rounded), so M is held to within one unit of it.
+        let p = Problem::from_case(&worked_case(), &LubricantTable::table1()).unwrap();
+        assert!((p.groups.m - 1738.0).abs() < 1.0, "M = {}", p.groups.m);
+        assert!((p.groups.l - 14.79).abs() < 0.005, "L = {}", p.groups.l);
+        assert!((p.groups.alpha_bar - 64.8).abs() < 1e-9);
+        // Circular contact: Venner's lambda = (128 pi^3 / (3 M^4))^(1/3).
+        let lam = (128.0 * std::f64::consts::PI.powi(3) / (3.0 * p.groups.m.powi(4))).cbrt();
+        assert!((p.groups.lambda / lam - 1.0).abs() < 1e-12);
+        // Moes film scale (1.5 M)^(2/3) for a circle.
+        assert!((p.groups.moes_film_scale / (1.5 * p.groups.m).powf(2.0 / 3.0) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn dimensionless_form_reproduces_the_physical_groups() {
+        let lubs = LubricantTable::table1();
+        let phys = Problem::from_case(&worked_case(), &lubs).unwrap();
+        let g = phys.groups;
+        let dimless = Case {
+            spec: Spec::Dimensionless(DimensionlessCase {
+                m: g.m,
+                l: g.l,
+                s_bar: g.s_bar,
+                d: 1.0,
+                slip: 0.005,
+                eta0_pa_s: Some(8.24e-3),
+                ph_pa: Some(3e9),
+            }),
+            physics: Physics::figs_4_to_7(),
+        };
+        let p = Problem::from_case(&dimless, &lubs).unwrap();
+        for (a, b, what) in [
+            (p.groups.lambda, g.lambda, "lambda"),
+            (p.groups.alpha_bar, g.alpha_bar, "alpha_bar"),
+            (p.groups.n, g.n, "N"),
+            (p.groups.moes_film_scale, g.moes_film_scale, "moes scale"),
+            (p.viscosity.eta_bar(1.0), phys.viscosity.eta_bar(1.0), "eta(p_H)"),
+            (p.tau_c(), phys.tau_c(), "tau_c"),
+        ] {
+            assert!((a / b - 1.0).abs() < 1e-10, "{what}: {a} vs {b}");
+        }
+    }
+
+    #[test]
+    fn eyring_group_is_the_couette_stress_at_the_centre() {
+        // N eta_bar S / H = eta du / (h tau0) with du = S u_m: check the units by hand.
+        let p = Problem::from_case(&worked_case(), &LubricantTable::table1()).unwrap();
+        let h = 1e-7; // m
+        let eta = 8.24e-3 * p.viscosity.eta_bar(1.0);
+        let direct = eta * 0.005 * 12.0 / (h * 4e6);
+        let via_n = p.groups.n * p.viscosity.eta_bar(1.0) * 0.005 / (h / p.hertz.c);
+        assert!((direct / via_n - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bad_fields_are_named() {
+        let lubs = LubricantTable::table1();
+        let mut c = worked_case();
+        if let Spec::Physical(p) = &mut c.spec {
+            p.slip = 2.5;
+        }
+        assert!(Problem::from_case(&c, &lubs).unwrap_err().to_string().starts_with("slip:"));
+        let mut c = worked_case();
+        if let Spec::Physical(p) = &mut c.spec {
+            p.ph_pa = -1.0;
+        }
+        assert!(Problem::from_case(&c, &lubs).unwrap_err().to_string().starts_with("ph:"));
+        let mut c = worked_case();
+        if let Spec::Physical(p) = &mut c.spec {
+            p.ry_m = p.rx_m / 2.0;
+        }
+        assert!(Problem::from_case(&c, &lubs).unwrap_err().to_string().starts_with("ry:"));
+    }
+}

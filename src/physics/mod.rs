@@ -1,0 +1,10 @@
+//! Physics models: contact geometry, viscosity, density, rheology, lubricants, film formulas,
+//! and the case that composes them into a dimensionless problem.
+
+pub mod case;
+pub mod density;
+pub mod film;
+pub mod hertz;
+pub mod lubricant;
+pub mod rheology;
+pub mod viscosity;
