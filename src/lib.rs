@@ -5,3 +5,4 @@
 //! [`physics`]. The numerical kernel does no I/O.
 
 pub mod physics;
+pub mod solver;
