@@ -1,5 +1,6 @@
-//! Solvers: grids, the deformation integral and the point-contact EHL multigrid solver.
+//! Solvers: grids, the deformation integral and the EHL multigrid solvers.
 //! No I/O: progress goes through a callback the caller passes in.
 
 pub mod deformation;
 pub mod grid;
+pub mod output;

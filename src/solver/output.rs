@@ -1,0 +1,109 @@
+//! What every solver returns: film thickness, reduced friction, convergence information, and
+//! the typed failure that carries the residual history.
+
+use serde::Serialize;
+
+/// Film thickness results.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Film {
+    /// Central film thickness in the solver's dimensionless unit (`H = h/c` for the point
+    /// contact, the paper's Table 4 "Hc").
+    pub h_central: f64,
+    /// Minimum film thickness, same unit.
+    pub h_min: f64,
+    /// Central film thickness in Moes units `(h/Rx) (eta0 u_s / (E' Rx))^{-1/2}`.
+    pub hc_moes: f64,
+    /// Minimum film thickness in Moes units.
+    pub hmin_moes: f64,
+}
+
+/// Reduced friction `mu-bar = mu p_H / tau0`, Eq. (8), split into its parts.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Friction {
+    /// From the mean (Couette) shear stress `tau_m` only: Figs. 3-7.
+    pub sliding: f64,
+    /// From the Poiseuille shear `(h/2) dp/dx` on the surface; `None` when not asked for.
+    pub rolling: Option<f64>,
+}
+
+impl Friction {
+    /// Sliding plus rolling (Figs. 1-2); the sliding part alone when rolling was not computed.
+    pub fn total(&self) -> f64 {
+        self.sliding + self.rolling.unwrap_or(0.0)
+    }
+}
+
+/// How the solve went.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Info {
+    /// Multigrid cycles on the finest level (after the full-multigrid start).
+    pub cycles: usize,
+    /// Residual norm after each finest-level cycle.
+    pub residual_history: Vec<f64>,
+    /// Relative force-balance error `|int P - target| / target` at the end.
+    pub load_error: f64,
+    /// Wall time, s.
+    pub seconds: f64,
+}
+
+impl Info {
+    /// The last residual (infinite when no cycle ran).
+    pub fn residual(&self) -> f64 {
+        self.residual_history.last().copied().unwrap_or(f64::INFINITY)
+    }
+}
+
+/// A solve that did not produce a trustworthy answer.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum SolveError {
+    /// The residual did not fall below the tolerance within the cycle budget.
+    #[error("not converged after {cycles} cycles: residual {last:.3e} > tolerance {tolerance:.1e} (history: {history})", last = residual_history.last().copied().unwrap_or(f64::NAN), history = format_history(residual_history))]
+    NotConverged {
+        /// Cycles run.
+        cycles: usize,
+        /// Requested tolerance.
+        tolerance: f64,
+        /// Residual after each cycle.
+        residual_history: Vec<f64>,
+    },
+    /// A NaN or infinity appeared in the pressure, film or residual.
+    #[error("non-finite {what} at cycle {cycle} (history: {history})", history = format_history(residual_history))]
+    NonFinite {
+        /// Which quantity.
+        what: &'static str,
+        /// Cycle in which it appeared.
+        cycle: usize,
+        /// Residual after each completed cycle.
+        residual_history: Vec<f64>,
+    },
+    /// The film collapsed (`H <= 0` somewhere): the grid is too coarse for this load.
+    #[error("film thickness became non-positive (min H = {h_min:.3e}) at cycle {cycle} (history: {history})", history = format_history(residual_history))]
+    FilmCollapse {
+        /// Minimum film.
+        h_min: f64,
+        /// Cycle.
+        cycle: usize,
+        /// Residual after each completed cycle.
+        residual_history: Vec<f64>,
+    },
+    /// Parameters the solver cannot use.
+    #[error("invalid solver parameter: {0}")]
+    InvalidParams(String),
+}
+
+impl SolveError {
+    /// The residual history carried by the error.
+    pub fn residual_history(&self) -> &[f64] {
+        match self {
+            SolveError::NotConverged { residual_history, .. }
+            | SolveError::NonFinite { residual_history, .. }
+            | SolveError::FilmCollapse { residual_history, .. } => residual_history,
+            SolveError::InvalidParams(_) => &[],
+        }
+    }
+}
+
+fn format_history(h: &[f64]) -> String {
+    h.iter().map(|r| format!("{r:.2e}")).collect::<Vec<_>>().join(", ")
+}
