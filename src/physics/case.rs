@@ -130,7 +130,10 @@ pub enum CaseError {
 }
 
 fn field(field: &'static str, message: impl Into<String>) -> CaseError {
-    CaseError::Field { field, message: message.into() }
+    CaseError::Field {
+        field,
+        message: message.into(),
+    }
 }
 
 fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
@@ -145,7 +148,10 @@ fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError> {
     if (0.0..=2.0).contains(&s) {
         Ok(s)
     } else {
-        Err(field(name, format!("slide-to-roll ratio must lie in [0, 2], got {s}")))
+        Err(field(
+            name,
+            format!("slide-to-roll ratio must lie in [0, 2], got {s}"),
+        ))
     }
 }
 
@@ -229,15 +235,26 @@ impl Problem {
         }
     }
 
-    fn from_physical(p: &PhysicalCase, physics: Physics, lubs: &LubricantTable) -> Result<Self, CaseError> {
+    fn from_physical(
+        p: &PhysicalCase,
+        physics: Physics,
+        lubs: &LubricantTable,
+    ) -> Result<Self, CaseError> {
         let (alpha, eta0) = match &p.lubricant {
-            LubricantSpec::Named { lubricant, temperature_c } => {
+            LubricantSpec::Named {
+                lubricant,
+                temperature_c,
+            } => {
                 let s = lubs.state(lubricant, *temperature_c)?;
                 (s.alpha_per_pa, s.eta0_pa_s)
             }
-            LubricantSpec::Given { alpha_per_pa, eta0_pa_s } => {
-                (positive("alpha", *alpha_per_pa)?, positive("eta0", *eta0_pa_s)?)
-            }
+            LubricantSpec::Given {
+                alpha_per_pa,
+                eta0_pa_s,
+            } => (
+                positive("alpha", *alpha_per_pa)?,
+                positive("eta0", *eta0_pa_s)?,
+            ),
         };
         let ph = positive("ph", p.ph_pa)?;
         let um = positive("um", p.um_m_s)?;
@@ -247,7 +264,10 @@ impl Problem {
         let ry = positive("ry", p.ry_m)?;
         let e_prime = positive("e-prime", p.e_prime_pa)?;
         if rx > ry {
-            return Err(field("ry", format!("Rx/Ry must not exceed 1 (kappa in (0, 1]); got Rx = {rx}, Ry = {ry}")));
+            return Err(field(
+                "ry",
+                format!("Rx/Ry must not exceed 1 (kappa in (0, 1]); got Rx = {rx}, Ry = {ry}"),
+            ));
         }
         let hz = Hertz::from_ph(ph, rx, ry, e_prime);
         let groups = Groups::new(&hz, eta0 * 2.0 * um, alpha, 1.0 / tau0, slip);
@@ -259,7 +279,10 @@ impl Problem {
         let l = positive("l", d.l)?;
         let ratio = positive("d", d.d)?;
         if ratio > 1.0 {
-            return Err(field("d", format!("Rx/Ry must lie in (0, 1] (kappa in (0, 1]), got {ratio}")));
+            return Err(field(
+                "d",
+                format!("Rx/Ry must lie in (0, 1] (kappa in (0, 1]), got {ratio}"),
+            ));
         }
         if !(d.s_bar >= 0.0 && d.s_bar.is_finite()) {
             return Err(field("s-bar", format!("must be >= 0, got {}", d.s_bar)));
@@ -273,7 +296,8 @@ impl Problem {
         let hz = Hertz::from_load(m, 1.0, 1.0 / ratio, 1.0);
         let tau0_inv = if d.s_bar > 0.0 { d.s_bar / slip } else { 0.0 };
         let groups = Groups::new(&hz, 1.0, l, tau0_inv, slip);
-        let needs_ph = physics.viscosity == ViscosityLaw::Roelands || physics.density == DensityLaw::DowsonHigginson;
+        let needs_ph = physics.viscosity == ViscosityLaw::Roelands
+            || physics.density == DensityLaw::DowsonHigginson;
         let ph_pa = match d.ph_pa {
             Some(v) => positive("ph", v)?,
             None if needs_ph => {
@@ -284,18 +308,29 @@ impl Problem {
         let eta0 = match d.eta0_pa_s {
             Some(v) => positive("eta0", v)?,
             None if physics.viscosity == ViscosityLaw::Roelands => {
-                return Err(field("eta0", "Roelands needs the ambient viscosity (Pa s) in the dimensionless form"))
+                return Err(field(
+                    "eta0",
+                    "Roelands needs the ambient viscosity (Pa s) in the dimensionless form",
+                ))
             }
             None => f64::NAN,
         };
-        let mut problem = Self::assemble(groups, hz, physics, eta0, groups.alpha_bar / ph_pa, ph_pa);
+        let mut problem =
+            Self::assemble(groups, hz, physics, eta0, groups.alpha_bar / ph_pa, ph_pa);
         if physics.viscosity == ViscosityLaw::Barus {
             problem.viscosity = Viscosity::barus(groups.alpha_bar);
         }
         Ok(problem)
     }
 
-    fn assemble(groups: Groups, hertz: Hertz, physics: Physics, eta0: f64, alpha: f64, ph: f64) -> Self {
+    fn assemble(
+        groups: Groups,
+        hertz: Hertz,
+        physics: Physics,
+        eta0: f64,
+        alpha: f64,
+        ph: f64,
+    ) -> Self {
         Problem {
             groups,
             ell_k: hertz.ell_k,
@@ -312,7 +347,11 @@ impl Problem {
 
     /// The physics this problem composes.
     pub fn physics(&self) -> Physics {
-        Physics { viscosity: self.viscosity.law(), density: self.density.law(), rheology: self.rheology }
+        Physics {
+            viscosity: self.viscosity.law(),
+            density: self.density.law(),
+            rheology: self.rheology,
+        }
     }
 
     /// `N S`: the Couette stress argument is `N S eta_bar / H` (Eq. 4).
@@ -323,7 +362,8 @@ impl Problem {
     /// Characteristic shear stress, Eq. (12): `tau_c = eta_bar(p_H) S-bar / Hc` with `Hc`
     /// from Eq. (10) and `eta_bar(p_H)` from the case's own viscosity law.
     pub fn tau_c(&self) -> f64 {
-        self.viscosity.eta_bar(1.0) * self.groups.s_bar / super::film::hc_eq10(self.groups.m, self.groups.l)
+        self.viscosity.eta_bar(1.0) * self.groups.s_bar
+            / super::film::hc_eq10(self.groups.m, self.groups.l)
     }
 }
 
@@ -334,7 +374,10 @@ mod tests {
     pub(crate) fn worked_case() -> Case {
         Case {
             spec: Spec::Physical(PhysicalCase {
-                lubricant: LubricantSpec::Named { lubricant: "mineral-oil-a".into(), temperature_c: 40.0 },
+                lubricant: LubricantSpec::Named {
+                    lubricant: "mineral-oil-a".into(),
+                    temperature_c: 40.0,
+                },
                 ph_pa: 3e9,
                 um_m_s: 12.0,
                 slip: 0.005,
@@ -359,7 +402,9 @@ mod tests {
         let lam = (128.0 * std::f64::consts::PI.powi(3) / (3.0 * p.groups.m.powi(4))).cbrt();
         assert!((p.groups.lambda / lam - 1.0).abs() < 1e-12);
         // Moes film scale (1.5 M)^(2/3) for a circle.
-        assert!((p.groups.moes_film_scale / (1.5 * p.groups.m).powf(2.0 / 3.0) - 1.0).abs() < 1e-12);
+        assert!(
+            (p.groups.moes_film_scale / (1.5 * p.groups.m).powf(2.0 / 3.0) - 1.0).abs() < 1e-12
+        );
     }
 
     #[test]
@@ -385,7 +430,11 @@ mod tests {
             (p.groups.alpha_bar, g.alpha_bar, "alpha_bar"),
             (p.groups.n, g.n, "N"),
             (p.groups.moes_film_scale, g.moes_film_scale, "moes scale"),
-            (p.viscosity.eta_bar(1.0), phys.viscosity.eta_bar(1.0), "eta(p_H)"),
+            (
+                p.viscosity.eta_bar(1.0),
+                phys.viscosity.eta_bar(1.0),
+                "eta(p_H)",
+            ),
             (p.tau_c(), phys.tau_c(), "tau_c"),
         ] {
             assert!((a / b - 1.0).abs() < 1e-10, "{what}: {a} vs {b}");
@@ -410,16 +459,25 @@ mod tests {
         if let Spec::Physical(p) = &mut c.spec {
             p.slip = 2.5;
         }
-        assert!(Problem::from_case(&c, &lubs).unwrap_err().to_string().starts_with("slip:"));
+        assert!(Problem::from_case(&c, &lubs)
+            .unwrap_err()
+            .to_string()
+            .starts_with("slip:"));
         let mut c = worked_case();
         if let Spec::Physical(p) = &mut c.spec {
             p.ph_pa = -1.0;
         }
-        assert!(Problem::from_case(&c, &lubs).unwrap_err().to_string().starts_with("ph:"));
+        assert!(Problem::from_case(&c, &lubs)
+            .unwrap_err()
+            .to_string()
+            .starts_with("ph:"));
         let mut c = worked_case();
         if let Spec::Physical(p) = &mut c.spec {
             p.ry_m = p.rx_m / 2.0;
         }
-        assert!(Problem::from_case(&c, &lubs).unwrap_err().to_string().starts_with("ry:"));
+        assert!(Problem::from_case(&c, &lubs)
+            .unwrap_err()
+            .to_string()
+            .starts_with("ry:"));
     }
 }

@@ -15,10 +15,12 @@ pub fn hc_nijenbanning(m: f64, l: f64, d: f64) -> f64 {
     let h_ri = 145.0 * (1.0 + 0.796 * d.powf(14.0 / 15.0)).powf(-15.0 / 7.0) / d / (m * m);
     let h_ei = 3.18 * g.powf(-14.0 / 25.0) * d.powf(-1.0 / 15.0) * m.powf(-2.0 / 15.0);
     let h_rp = 1.29 * (1.0 + 0.691 * d).powf(-2.0 / 3.0) * l.powf(2.0 / 3.0);
-    let h_ep = 1.48 * g.powf(-7.0 / 20.0) * d.powf(-1.0 / 24.0) * m.powf(-1.0 / 12.0) * l.powf(0.75);
+    let h_ep =
+        1.48 * g.powf(-7.0 / 20.0) * d.powf(-1.0 / 24.0) * m.powf(-1.0 / 12.0) * l.powf(0.75);
     let s = 1.5 * (1.0 + (-1.2 * h_ei / h_ri).exp());
     let h00 = 1.8 / d;
-    let rigid = (h_ri.powf(1.5) + (h_ei.powf(-4.0) + h00.powf(-4.0)).powf(-3.0 / 8.0)).powf(2.0 * s / 3.0);
+    let rigid =
+        (h_ri.powf(1.5) + (h_ei.powf(-4.0) + h00.powf(-4.0)).powf(-3.0 / 8.0)).powf(2.0 * s / 3.0);
     let piezo = (h_rp.powf(-8.0) + h_ep.powf(-8.0)).powf(-s / 8.0);
     (rigid + piezo).powf(1.0 / s)
 }

@@ -120,7 +120,19 @@ impl Hertz {
         let b = a / kappa;
         let c = 2.0 * ph * a * ell_k / e_prime;
         let load = 2.0 * PI * a * b * ph / 3.0;
-        Hertz { rx, ry, e_prime, kappa, ell_k, ell_e, a, b, c, ph, load }
+        Hertz {
+            rx,
+            ry,
+            e_prime,
+            kappa,
+            ell_k,
+            ell_e,
+            a,
+            b,
+            c,
+            ph,
+            load,
+        }
     }
 
     /// Contact scales from the load: `a = (3 f R / E')^{1/3} (2 kappa E / pi)^{1/3}` and
@@ -173,7 +185,10 @@ mod tests {
         assert!((kappa_from_ratio(1.0) - 1.0).abs() < 1e-15);
         // The inverse is exact to the bisection tolerance.
         for d in [0.05, 0.1, 0.3, 0.9, 0.999] {
-            assert!((ellipticity_ratio(kappa_from_ratio(d)) - d).abs() < 1e-10, "D = {d}");
+            assert!(
+                (ellipticity_ratio(kappa_from_ratio(d)) - d).abs() < 1e-10,
+                "D = {d}"
+            );
         }
     }
 

@@ -30,7 +30,9 @@ pub enum LubricantError {
         known: String,
     },
     /// A temperature outside the tabulated range.
-    #[error("lubricant '{name}': temperature {temperature_c} C is outside the table ({lo}..{hi} C)")]
+    #[error(
+        "lubricant '{name}': temperature {temperature_c} C is outside the table ({lo}..{hi} C)"
+    )]
     Temperature {
         /// Lubricant name.
         name: String,
@@ -79,24 +81,45 @@ impl Lubricant {
                 hi,
             });
         }
-        let i = t.iter().rposition(|&ti| ti <= temperature_c).unwrap_or(0).min(t.len() - 1);
+        let i = t
+            .iter()
+            .rposition(|&ti| ti <= temperature_c)
+            .unwrap_or(0)
+            .min(t.len() - 1);
         let j = (i + 1).min(t.len() - 1);
-        let w = if j == i { 0.0 } else { (temperature_c - t[i]) / (t[j] - t[i]) };
+        let w = if j == i {
+            0.0
+        } else {
+            (temperature_c - t[i]) / (t[j] - t[i])
+        };
         let alpha = (1.0 - w) * self.alpha_per_gpa[i] + w * self.alpha_per_gpa[j];
         let ln_eta = (1.0 - w) * self.eta0_mpa_s[i].ln() + w * self.eta0_mpa_s[j].ln();
-        Ok(LubricantState { alpha_per_pa: alpha * 1e-9, eta0_pa_s: ln_eta.exp() * 1e-3 })
+        Ok(LubricantState {
+            alpha_per_pa: alpha * 1e-9,
+            eta0_pa_s: ln_eta.exp() * 1e-3,
+        })
     }
 
     fn validate(&self, name: &str) -> Result<(), LubricantError> {
-        let bad = |what: &str| LubricantError::Invalid { name: name.into(), what: what.into() };
+        let bad = |what: &str| LubricantError::Invalid {
+            name: name.into(),
+            what: what.into(),
+        };
         let n = self.temperature_c.len();
         if n == 0 || self.alpha_per_gpa.len() != n || self.eta0_mpa_s.len() != n {
-            return Err(bad("temperature_c, alpha_per_gpa and eta0_mpa_s must have one entry per temperature"));
+            return Err(bad(
+                "temperature_c, alpha_per_gpa and eta0_mpa_s must have one entry per temperature",
+            ));
         }
         if self.temperature_c.windows(2).any(|w| w[1] <= w[0]) {
             return Err(bad("temperature_c must increase"));
         }
-        if self.alpha_per_gpa.iter().chain(&self.eta0_mpa_s).any(|&v| !(v > 0.0 && v.is_finite())) {
+        if self
+            .alpha_per_gpa
+            .iter()
+            .chain(&self.eta0_mpa_s)
+            .any(|&v| !(v > 0.0 && v.is_finite()))
+        {
             return Err(bad("alpha_per_gpa and eta0_mpa_s must be positive"));
         }
         Ok(())
@@ -159,9 +182,15 @@ mod tests {
         let s = t.state("traction-fluid", 50.0).unwrap();
         assert!((s.alpha_per_pa - 25.75e-9).abs() < 1e-18);
         assert!((s.eta0_pa_s - (28.4e-3_f64 * 13.1e-3).sqrt()).abs() < 1e-12);
-        assert!(matches!(t.state("traction-fluid", 20.0), Err(LubricantError::Temperature { .. })));
+        assert!(matches!(
+            t.state("traction-fluid", 20.0),
+            Err(LubricantError::Temperature { .. })
+        ));
         let e = t.state("castor-oil", 40.0).unwrap_err().to_string();
-        assert!(e.contains("castor-oil") && e.contains("mineral-oil-a"), "{e}");
+        assert!(
+            e.contains("castor-oil") && e.contains("mineral-oil-a"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -170,7 +199,9 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("'x'") && e.contains("alpha_per_gpa"), "{e}");
-        let e = LubricantTable::parse("[x]\ndescription='x'\n").unwrap_err().to_string();
+        let e = LubricantTable::parse("[x]\ndescription='x'\n")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("temperature_c"), "{e}");
     }
 }

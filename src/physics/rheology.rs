@@ -56,6 +56,42 @@ impl Rheology {
     }
 }
 
+impl Rheology {
+    /// Poiseuille conductance along the sliding direction, `H^3 / eta_x_bar` (Eqs. 1-2), for
+    /// film `h`, viscosity `eta` and `n_s = N S`. For Eyring it is written
+    /// `H^2 hypot(H / eta, N S)`, finite however large `eta` is; zero where `h <= 0`.
+    #[inline]
+    pub fn conductance_x(self, h: f64, eta: f64, n_s: f64) -> f64 {
+        if h <= 0.0 {
+            return 0.0;
+        }
+        match self {
+            Rheology::Newtonian => h * h * h / eta,
+            Rheology::Eyring => h * h * (h / eta).hypot(n_s),
+        }
+    }
+
+    /// Poiseuille conductance across the sliding direction, `H^3 / eta_y_bar` (Eqs. 1, 3).
+    /// For Eyring, with `x = N S eta / H`: `(H^3 / eta) x / asinh(x) = H^2 N S / asinh(x)`.
+    #[inline]
+    pub fn conductance_y(self, h: f64, eta: f64, n_s: f64) -> f64 {
+        if h <= 0.0 {
+            return 0.0;
+        }
+        match self {
+            Rheology::Newtonian => h * h * h / eta,
+            Rheology::Eyring => {
+                let x = n_s * eta / h;
+                if x < 1e-4 {
+                    h * h * h / eta * (1.0 + x * x / 6.0)
+                } else {
+                    h * h * n_s / x.asinh()
+                }
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -85,6 +121,21 @@ mod tests {
         }
         // Huge arguments stay finite.
         assert!(e.flow_factor_x(1e200).is_finite());
+    }
+
+    #[test]
+    fn conductances_are_h_cubed_over_the_effective_viscosities() {
+        let e = Rheology::Eyring;
+        for (h, eta, ns) in [(0.02, 1e20, 1e-5), (0.5, 3.0, 0.01), (1.0, 1.0, 0.0)] {
+            let x = ns * eta / h;
+            let cx = h * h * h / eta * e.flow_factor_x(x);
+            let cy = h * h * h / eta * e.flow_factor_y(x);
+            assert!((e.conductance_x(h, eta, ns) / cx - 1.0).abs() < 1e-12);
+            assert!((e.conductance_y(h, eta, ns) / cy - 1.0).abs() < 1e-12);
+        }
+        assert_eq!(e.conductance_x(-1e-3, 1.0, 0.1), 0.0);
+        // Where eta overflows to infinity the conductance stays finite.
+        assert!(e.conductance_x(0.02, f64::INFINITY, 1e-5).is_finite());
     }
 
     #[test]

@@ -68,9 +68,11 @@ impl Viscosity {
         let p = p.max(0.0);
         match *self {
             Viscosity::Barus { alpha_bar } => alpha_bar * p,
-            Viscosity::Roelands { ln_ratio, z, ph_over_p0 } => {
-                ln_ratio * ((1.0 + ph_over_p0 * p).powf(z) - 1.0)
-            }
+            Viscosity::Roelands {
+                ln_ratio,
+                z,
+                ph_over_p0,
+            } => ln_ratio * ((1.0 + ph_over_p0 * p).powf(z) - 1.0),
         }
     }
 
@@ -107,7 +109,10 @@ mod tests {
         let dp = 1e-7;
         let slope = v.ln_eta_bar(dp) / dp;
         // Initial slopes agree to first order in dp (relative error ~ (z-1) p/p0 ~ 1e-5).
-        assert!((slope / (21.6e-9 * 3e9) - 1.0).abs() < 1e-4, "slope {slope}");
+        assert!(
+            (slope / (21.6e-9 * 3e9) - 1.0).abs() < 1e-4,
+            "slope {slope}"
+        );
         assert!(v.eta_bar(1.0) < b.eta_bar(1.0) * 1e-3);
         // Hand evaluation of the formula at p = p_H:
         // ln_ratio = ln(8.24e-3) + 9.67, z = alpha p0 / ln_ratio.

@@ -72,7 +72,8 @@ pub fn direct_sum(grid: &Grid, kernel: &Kernel, p: &[f64]) -> Vec<f64> {
             let mut s = 0.0;
             for l in 0..grid.py() {
                 for k in 0..grid.px() {
-                    s += kernel.at(i as isize - k as isize, j as isize - l as isize) * p[grid.idx(k, l)];
+                    s += kernel.at(i as isize - k as isize, j as isize - l as isize)
+                        * p[grid.idx(k, l)];
                 }
             }
             w[grid.idx(i, j)] = s;
@@ -100,7 +101,11 @@ pub struct Deformation {
 
 impl std::fmt::Debug for Deformation {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Deformation").field("grid", &self.grid).field("n1", &self.n1).field("n2", &self.n2).finish()
+        f.debug_struct("Deformation")
+            .field("grid", &self.grid)
+            .field("n1", &self.n1)
+            .field("n2", &self.n2)
+            .finish()
     }
 }
 
@@ -123,9 +128,17 @@ impl Deformation {
         };
         let mut buf = vec![Complex::new(0.0, 0.0); n1 * n2];
         for l in 0..n2 {
-            let dl = if l <= grid.ny { l as isize } else { l as isize - n2 as isize };
+            let dl = if l <= grid.ny {
+                l as isize
+            } else {
+                l as isize - n2 as isize
+            };
             for k in 0..n1 {
-                let dk = if k <= grid.nx { k as isize } else { k as isize - n1 as isize };
+                let dk = if k <= grid.nx {
+                    k as isize
+                } else {
+                    k as isize - n1 as isize
+                };
                 buf[l * n1 + k] = Complex::new(d.kernel.at(dk, dl), 0.0);
             }
         }
@@ -148,7 +161,11 @@ impl Deformation {
 
     fn transform(&self, buf: &mut [Complex<f64>], forward: bool) {
         let (n1, n2) = (self.n1, self.n2);
-        let (f1, f2) = if forward { (&self.fwd1, &self.fwd2) } else { (&self.inv1, &self.inv2) };
+        let (f1, f2) = if forward {
+            (&self.fwd1, &self.fwd2)
+        } else {
+            (&self.inv1, &self.inv2)
+        };
         f1.process(buf);
         // Columns: transpose into a scratch buffer, transform rows, transpose back.
         let mut t = vec![Complex::new(0.0, 0.0); n1 * n2];
@@ -177,7 +194,9 @@ impl Deformation {
             }
         }
         self.transform(&mut buf, true);
-        buf.iter_mut().zip(&self.spectrum).for_each(|(b, s)| *b *= s);
+        buf.iter_mut()
+            .zip(&self.spectrum)
+            .for_each(|(b, s)| *b *= s);
         self.transform(&mut buf, false);
         for j in 0..g.py() {
             for i in 0..g.px() {
@@ -196,7 +215,14 @@ mod tests {
     #[test]
     fn cell_integral_of_the_centre_cell_is_the_closed_form() {
         // Square cell of side h around the singularity: int int 1/r = 4 h asinh(1) (exact).
-        let g = Grid { nx: 4, ny: 4, x0: 0.0, y0: 0.0, hx: 0.1, hy: 0.1 };
+        let g = Grid {
+            nx: 4,
+            ny: 4,
+            x0: 0.0,
+            y0: 0.0,
+            hx: 0.1,
+            hy: 0.1,
+        };
         let k = Kernel::new(&g, 1.0, PI / 2.0);
         let expect = 4.0 * 0.1 * 1f64.asinh() / (PI * PI / 2.0);
         assert!((k.at(0, 0) - expect).abs() < 1e-15);
@@ -209,7 +235,11 @@ mod tests {
     fn fft_convolution_equals_the_direct_sum() {
         // Exactness of the zero-padded FFT: any pressure with zero boundary values, an
         // elliptical kernel; round-off only (1e-12 of the largest value).
-        let d = Domain { x_start: -2.0, x_end: 1.0, y_half: 1.2 };
+        let d = Domain {
+            x_start: -2.0,
+            x_end: 1.0,
+            y_half: 1.2,
+        };
         let g = Grid::level(&d, 3);
         let kappa = 0.4;
         let (ell_k, _) = elliptic_integrals(kappa);
@@ -241,7 +271,11 @@ mod tests {
         let kappa = kappa_from_ratio(d_ratio);
         let (ell_k, _) = elliptic_integrals(kappa);
         let s = shape_factor(kappa);
-        let dom = Domain { x_start: -1.5, x_end: 1.5, y_half: 1.5 };
+        let dom = Domain {
+            x_start: -1.5,
+            x_end: 1.5,
+            y_half: 1.5,
+        };
         let g = Grid::level(&dom, level);
         let p = g.sample(Hertz::pressure);
         let def = Deformation::new(&g, kappa, ell_k);
@@ -272,7 +306,10 @@ mod tests {
             let (lo6, hi6) = dry_contact_flatness(d, 6);
             assert!(hi6 - lo6 < 1e-4, "D = {d}: spread {}", hi6 - lo6);
             // Second order would give 0.25; 0.4 leaves room for the edge of the ellipse.
-            assert!(hi6 - lo6 < 0.4 * (hi5 - lo5), "D = {d}: no second-order convergence");
+            assert!(
+                hi6 - lo6 < 0.4 * (hi5 - lo5),
+                "D = {d}: no second-order convergence"
+            );
             let mid = 0.5 * (lo6 + hi6);
             assert!((mid - 1.0).abs() < 1e-4, "D = {d}: approach {mid}");
         }

@@ -1,6 +1,8 @@
 //! Solvers: grids, the deformation integral and the EHL multigrid solvers.
 //! No I/O: progress goes through a callback the caller passes in.
 
+pub mod banded;
 pub mod deformation;
 pub mod grid;
 pub mod output;
+pub mod point;

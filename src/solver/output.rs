@@ -49,7 +49,10 @@ pub struct Info {
 impl Info {
     /// The last residual (infinite when no cycle ran).
     pub fn residual(&self) -> f64 {
-        self.residual_history.last().copied().unwrap_or(f64::INFINITY)
+        self.residual_history
+            .last()
+            .copied()
+            .unwrap_or(f64::INFINITY)
     }
 }
 
@@ -96,14 +99,23 @@ impl SolveError {
     /// The residual history carried by the error.
     pub fn residual_history(&self) -> &[f64] {
         match self {
-            SolveError::NotConverged { residual_history, .. }
-            | SolveError::NonFinite { residual_history, .. }
-            | SolveError::FilmCollapse { residual_history, .. } => residual_history,
+            SolveError::NotConverged {
+                residual_history, ..
+            }
+            | SolveError::NonFinite {
+                residual_history, ..
+            }
+            | SolveError::FilmCollapse {
+                residual_history, ..
+            } => residual_history,
             SolveError::InvalidParams(_) => &[],
         }
     }
 }
 
 fn format_history(h: &[f64]) -> String {
-    h.iter().map(|r| format!("{r:.2e}")).collect::<Vec<_>>().join(", ")
+    h.iter()
+        .map(|r| format!("{r:.2e}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }

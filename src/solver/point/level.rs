@@ -1,0 +1,205 @@
+//! One grid level of the point-contact problem: its fields, the film thickness equation
+//! (Eq. 6), the coefficients and the discrete Reynolds operator (Eq. 1).
+
+use crate::physics::case::Problem;
+use crate::physics::density::Density;
+use crate::physics::rheology::Rheology;
+use crate::physics::viscosity::Viscosity;
+use crate::solver::deformation::Deformation;
+use crate::solver::grid::Grid;
+
+/// `ln(eta/eta0)` is capped here so that `exp` stays finite; no converged EHL solution comes
+/// near it (it would need `alpha-bar P > 700`).
+const LN_ETA_MAX: f64 = 700.0;
+
+/// The parts of the dimensionless problem the discrete equations use.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Model {
+    pub viscosity: Viscosity,
+    pub density: Density,
+    pub rheology: Rheology,
+    /// `N S` of Eq. (4).
+    pub n_s: f64,
+    /// `1 / lambda`.
+    pub inv_lambda: f64,
+    /// `kappa^2`, the weight of the `Y` derivative in Eq. (1).
+    pub kappa2: f64,
+    /// Shape factor `S(kappa)` of Eq. (6).
+    pub shape: f64,
+    pub kappa: f64,
+    pub ell_k: f64,
+}
+
+impl Model {
+    pub fn new(problem: &Problem) -> Self {
+        let g = &problem.groups;
+        Model {
+            viscosity: problem.viscosity,
+            density: problem.density,
+            rheology: problem.rheology,
+            n_s: problem.eyring_n_s(),
+            inv_lambda: 1.0 / g.lambda,
+            kappa2: g.kappa * g.kappa,
+            shape: problem.shape,
+            kappa: g.kappa,
+            ell_k: problem.ell_k,
+        }
+    }
+
+    /// `eta_bar(P)`.
+    #[inline]
+    pub fn eta(&self, p: f64) -> f64 {
+        self.viscosity.ln_eta_bar(p).min(LN_ETA_MAX).exp()
+    }
+
+    /// Gap geometry `S X^2 + (1 - S) Y^2` of Eq. (6).
+    pub fn geometry(&self, x: f64, y: f64) -> f64 {
+        self.shape * x * x + (1.0 - self.shape) * y * y
+    }
+}
+
+/// Fields of one level.
+#[derive(Debug)]
+pub(crate) struct Level {
+    pub grid: Grid,
+    pub deformation: Deformation,
+    /// Pressure `P`.
+    pub p: Vec<f64>,
+    /// Right-hand side of the Reynolds equation (zero on the finest level; FAS on coarser).
+    pub f: Vec<f64>,
+    /// Film thickness `H = Delta + hrhs + W`.
+    pub h: Vec<f64>,
+    /// The film equation's right-hand side: geometry on the finest level, FAS on coarser.
+    pub hrhs: Vec<f64>,
+    /// Elastic deformation `W`.
+    pub w: Vec<f64>,
+    /// The coarse-grid pressure as restricted, before the coarse cycle (for the correction).
+    pub pold: Vec<f64>,
+    /// Right-hand side of the force balance: `sum P hx hy + rg = 0`.
+    pub rg: f64,
+    /// `rho H^3 / (eta_x lambda)` at the nodes.
+    pub ex: Vec<f64>,
+    /// `kappa^2 rho H^3 / (eta_y lambda)` at the nodes.
+    pub ey: Vec<f64>,
+    /// `rho` at the nodes (all ones and never touched when incompressible).
+    pub rho: Vec<f64>,
+    /// `rho H` at the nodes.
+    pub rh: Vec<f64>,
+}
+
+impl Level {
+    pub fn new(grid: Grid, model: &Model) -> Self {
+        let n = grid.len();
+        Level {
+            deformation: Deformation::new(&grid, model.kappa, model.ell_k),
+            p: vec![0.0; n],
+            f: vec![0.0; n],
+            h: vec![0.0; n],
+            hrhs: grid.sample(|x, y| model.geometry(x, y)),
+            w: vec![0.0; n],
+            pold: vec![0.0; n],
+            rg: -2.0 * std::f64::consts::PI / 3.0,
+            ex: vec![0.0; n],
+            ey: vec![0.0; n],
+            rho: vec![1.0; n],
+            rh: vec![0.0; n],
+            grid,
+        }
+    }
+
+    /// Eq. (6): `H = Delta + hrhs + W(P)`.
+    pub fn update_film(&mut self, h0: f64) {
+        self.deformation.apply(&self.p, &mut self.w);
+        for ((h, r), w) in self.h.iter_mut().zip(&self.hrhs).zip(&self.w) {
+            *h = h0 + r + w;
+        }
+    }
+
+    /// Coefficients of Eq. (1) from the current `P` and `H`.
+    pub fn update_coefficients(&mut self, m: &Model) {
+        let compressible = !m.density.is_incompressible();
+        for k in 0..self.p.len() {
+            let p = self.p[k];
+            let h = self.h[k];
+            let eta = m.eta(p);
+            let rho = if compressible {
+                let r = m.density.rho_bar(p);
+                self.rho[k] = r;
+                r
+            } else {
+                1.0
+            };
+            let scale = rho * m.inv_lambda;
+            self.ex[k] = scale * m.rheology.conductance_x(h, eta, m.n_s);
+            self.ey[k] = scale * m.kappa2 * m.rheology.conductance_y(h, eta, m.n_s);
+            self.rh[k] = rho * h;
+        }
+    }
+
+    /// Half-point coefficients `(xi_w, xi_e, xi_s, xi_n)` at `(i, j)`, divided by `h^2`.
+    #[inline]
+    pub fn xi(&self, i: usize, j: usize) -> [f64; 4] {
+        let g = &self.grid;
+        let c = g.idx(i, j);
+        let (rx2, ry2) = (0.5 / (g.hx * g.hx), 0.5 / (g.hy * g.hy));
+        [
+            (self.ex[c] + self.ex[c - 1]) * rx2,
+            (self.ex[c] + self.ex[c + 1]) * rx2,
+            (self.ey[c] + self.ey[c - g.px()]) * ry2,
+            (self.ey[c] + self.ey[c + g.px()]) * ry2,
+        ]
+    }
+
+    /// The wedge term `d(rho H)/dX` at `(i, j)`: second-order upstream, first order at `i = 1`.
+    #[inline]
+    pub fn wedge(&self, i: usize, j: usize) -> f64 {
+        let g = &self.grid;
+        let c = g.idx(i, j);
+        if i >= 2 {
+            (1.5 * self.rh[c] - 2.0 * self.rh[c - 1] + 0.5 * self.rh[c - 2]) / g.hx
+        } else {
+            (self.rh[c] - self.rh[c - 1]) / g.hx
+        }
+    }
+
+    /// The discrete Reynolds operator `L(P)` at interior node `(i, j)` for pressure `p`, with
+    /// the coefficients and film of the last update.
+    #[inline]
+    pub fn operator(&self, p: &[f64], i: usize, j: usize) -> f64 {
+        let g = &self.grid;
+        let c = g.idx(i, j);
+        let [xw, xe, xs, xn] = self.xi(i, j);
+        let pc = p[c];
+        xw * (p[c - 1] - pc)
+            + xe * (p[c + 1] - pc)
+            + xs * (p[c - g.px()] - pc)
+            + xn * (p[c + g.px()] - pc)
+            - self.wedge(i, j)
+    }
+
+    /// Residual `f - L(P)` at interior node `(i, j)`.
+    #[inline]
+    pub fn residual(&self, i: usize, j: usize) -> f64 {
+        self.f[self.grid.idx(i, j)] - self.operator(&self.p, i, j)
+    }
+
+    /// Mean absolute residual over the pressurised interior nodes (film and coefficients
+    /// must be current).
+    pub fn residual_norm(&self) -> f64 {
+        let g = &self.grid;
+        let mut sum = 0.0;
+        for j in 1..g.ny {
+            for i in 1..g.nx {
+                if self.p[g.idx(i, j)] > 0.0 {
+                    sum += self.residual(i, j).abs();
+                }
+            }
+        }
+        sum / ((g.nx - 1) * (g.ny - 1)) as f64
+    }
+
+    /// Force-balance defect `sum P hx hy + rg`.
+    pub fn load_defect(&self) -> f64 {
+        self.grid.integrate(&self.p) + self.rg
+    }
+}

@@ -1,0 +1,275 @@
+//! The isothermal elliptical EHL contact with Eyring rheology (Sec. II of the paper), solved
+//! by full-approximation-scheme multigrid with a full-multigrid start from the Hertzian
+//! pressure (Venner and Lubrecht, "Multilevel Methods in Lubrication", 2000):
+//!
+//! - Reynolds, Eq. (1), second-order central Poiseuille terms and a second-order upstream
+//!   wedge term; cavitation by `P = max(P, 0)`;
+//! - film, Eq. (6), with the deformation evaluated exactly on each grid by zero-padded FFT
+//!   ([`crate::solver::deformation`]);
+//! - line relaxation switching between Gauss-Seidel and Jacobi distributive ([`relax`]);
+//! - the force balance, Eq. (7), relaxed on the coarsest grid through `Delta`.
+//!
+//! The domain defaults to the paper's `-2.5 <= X <= 1.5`, `-2 <= Y <= 2`
+//! ([`Domain::default`]); level `n` has `2^(n+1)` intervals per direction.
+
+mod friction;
+mod level;
+mod multigrid;
+mod relax;
+mod transfer;
+
+use crate::physics::case::Problem;
+use crate::physics::film::hc_eq10;
+use crate::solver::grid::{Domain, Grid};
+use crate::solver::output::{Film, Friction, Info, SolveError};
+use level::Model;
+use multigrid::Hierarchy;
+use std::time::Instant;
+
+/// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
+pub const MAX_LEVEL: u32 = 9;
+/// Lowest level the solver accepts as the finest.
+pub const MIN_LEVEL: u32 = 3;
+/// Residual growth over the best cycle that stops the solve as diverged.
+const DIVERGENCE_FACTOR: f64 = 1e3;
+
+/// Solver parameters, with the defaults of the paper's working resolution.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Params {
+    /// Finest level: `2^(level+1)` intervals per direction. Default 7 (256 x 256).
+    pub level: u32,
+    /// Coarsest level of the hierarchy (lowered to `level` if above it). Default 4
+    /// (32 x 32): at the paper's heaviest loads a 16 x 16 grid no longer represents the smooth
+    /// error and the cycles slow down (Table 4 case, level 7: 33 V-cycles from level 3, 20
+    /// from level 4).
+    pub coarsest_level: u32,
+    /// Computational domain.
+    pub domain: Domain,
+    /// Relaxations before coarsening. Default 2.
+    pub pre_sweeps: usize,
+    /// Relaxations after the correction. Default 1.
+    pub post_sweeps: usize,
+    /// Relaxations on the coarsest grid per visit. Default 100.
+    pub coarsest_sweeps: usize,
+    /// Force-balance updates of `Delta` per visit of the coarsest grid, evenly among its
+    /// sweeps. Default 10.
+    pub coarsest_force_updates: usize,
+    /// Gain of the force-balance update `Delta += gain * (int P - 2 pi / 3)`. Default 0.1.
+    pub force_balance_gain: f64,
+    /// Cycle index: 1 for V-cycles, 2 for W-cycles. Default 1.
+    pub gamma: usize,
+    /// Cycles on each intermediate level of the full-multigrid start. Default 2.
+    pub fmg_cycles: usize,
+    /// Most cycles on the finest level. Default 40.
+    pub max_cycles: usize,
+    /// Convergence: the mean absolute Reynolds residual on the finest level. Default 1e-6.
+    pub tolerance: f64,
+    /// Convergence: relative force-balance error. Default 1e-4.
+    pub load_tolerance: f64,
+    /// Compute the rolling (Poiseuille) part of the friction. Default true.
+    pub rolling_friction: bool,
+    /// Fail with [`SolveError::FilmCollapse`] when the minimum film is not positive. Default
+    /// true; Table 4 turns it off at level 5, where the paper itself reports a film an
+    /// order of magnitude too thin.
+    pub require_positive_film: bool,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            level: 7,
+            coarsest_level: 4,
+            domain: Domain::default(),
+            pre_sweeps: 2,
+            post_sweeps: 1,
+            coarsest_sweeps: 100,
+            coarsest_force_updates: 10,
+            force_balance_gain: 0.1,
+            gamma: 1,
+            fmg_cycles: 2,
+            max_cycles: 40,
+            tolerance: 1e-6,
+            load_tolerance: 1e-4,
+            rolling_friction: true,
+            require_positive_film: true,
+        }
+    }
+}
+
+impl Params {
+    /// Default parameters at `level`.
+    pub fn at_level(level: u32) -> Self {
+        Params {
+            level,
+            ..Params::default()
+        }
+    }
+}
+
+/// What the observer is told after each cycle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// Level the cycle ran on.
+    pub level: u32,
+    /// Cycle number on that level (from 1).
+    pub cycle: usize,
+    /// Mean absolute residual after the cycle.
+    pub residual: f64,
+    /// Relative force-balance error after the cycle.
+    pub load_error: f64,
+    /// Central film `H` after the cycle.
+    pub h_central: f64,
+}
+
+/// A converged point-contact solution.
+#[derive(Debug, Clone)]
+pub struct PointSolution {
+    /// The finest grid.
+    pub grid: Grid,
+    /// Pressure `P = p/p_H` at the nodes.
+    pub p: Vec<f64>,
+    /// Film `H = h/c` at the nodes.
+    pub h: Vec<f64>,
+    /// The film constant `Delta` of Eq. (6).
+    pub delta: f64,
+    /// Central and minimum film.
+    pub film: Film,
+    /// Reduced friction.
+    pub friction: Friction,
+    /// Convergence information.
+    pub info: Info,
+}
+
+/// Solves `problem` with `params`; `observer` (if any) hears of every cycle.
+pub fn solve(
+    problem: &Problem,
+    params: &Params,
+    mut observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
+    let start = Instant::now();
+    if !(MIN_LEVEL..=MAX_LEVEL).contains(&params.level) {
+        return Err(SolveError::InvalidParams(format!(
+            "level {} outside {MIN_LEVEL}..={MAX_LEVEL}",
+            params.level
+        )));
+    }
+    if params.coarsest_level < 2 || params.gamma == 0 {
+        return Err(SolveError::InvalidParams(format!(
+            "coarsest level {} must be at least 2, gamma {} positive",
+            params.coarsest_level, params.gamma
+        )));
+    }
+    let params = &Params {
+        coarsest_level: params.coarsest_level.min(params.level),
+        ..params.clone()
+    };
+    let model = Model::new(problem);
+    let g = &problem.groups;
+    // Initial Delta: the Eq. (10) central film minus the Hertzian approach (W(0) = 1).
+    let h0 = hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0;
+    let mut mg = Hierarchy::new(model, &params.domain, params, h0);
+    let top = mg.levels.len() - 1;
+    let target = 2.0 * std::f64::consts::PI / 3.0;
+
+    // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
+    // from the interpolated solution of the one below.
+    {
+        let l0 = &mut mg.levels[0];
+        let grid = l0.grid;
+        l0.p = grid.sample(crate::physics::hertz::Hertz::pressure);
+    }
+    mg.make_top(0);
+    mg.cycle(0);
+    let mut history = Vec::new();
+    for k in 1..=top {
+        mg.make_top(k);
+        mg.interpolate(k);
+        let cycles = if k == top {
+            params.max_cycles
+        } else {
+            params.fmg_cycles
+        };
+        for cycle in 1..=cycles {
+            mg.cycle(k);
+            let residual = mg.residual_norm(k);
+            let level = &mg.levels[k];
+            let load_error = (level.load_defect() / target).abs();
+            if k == top {
+                history.push(residual);
+            }
+            if let Some(obs) = observer.as_mut() {
+                let (i, j) = level.grid.nearest(0.0, 0.0);
+                let h_central = level.h[level.grid.idx(i, j)];
+                obs(&Progress {
+                    level: params.coarsest_level + k as u32,
+                    cycle,
+                    residual,
+                    load_error,
+                    h_central,
+                });
+            }
+            if !residual.is_finite() || !mg.h0.is_finite() || level.p.iter().any(|v| !v.is_finite())
+            {
+                return Err(SolveError::NonFinite {
+                    what: "pressure or residual",
+                    cycle,
+                    residual_history: history,
+                });
+            }
+            // A residual a thousand times above the best one seen is divergence, not noise.
+            let best = history.iter().cloned().fold(f64::INFINITY, f64::min);
+            if k == top && residual > DIVERGENCE_FACTOR * best {
+                return Err(SolveError::NotConverged {
+                    cycles: cycle,
+                    tolerance: params.tolerance,
+                    residual_history: history,
+                });
+            }
+            if k == top && residual < params.tolerance && load_error < params.load_tolerance {
+                break;
+            }
+        }
+    }
+    let fine = mg.finest();
+    let load_error = (fine.load_defect() / target).abs();
+    let residual = history.last().copied().unwrap_or(f64::INFINITY);
+    let cycles = history.len();
+    if !(residual < params.tolerance && load_error < params.load_tolerance) {
+        return Err(SolveError::NotConverged {
+            cycles,
+            tolerance: params.tolerance,
+            residual_history: history,
+        });
+    }
+    let film = friction::film(fine, g.moes_film_scale);
+    if params.require_positive_film && film.h_min <= 0.0 {
+        return Err(SolveError::FilmCollapse {
+            h_min: film.h_min,
+            cycle: cycles,
+            residual_history: history,
+        });
+    }
+    let rolling = params.rolling_friction.then(|| g.rolling_stress_scale());
+    let friction = friction::friction(fine, &mg.model, rolling);
+    if !friction.sliding.is_finite() || !friction.total().is_finite() {
+        return Err(SolveError::NonFinite {
+            what: "friction",
+            cycle: cycles,
+            residual_history: history,
+        });
+    }
+    Ok(PointSolution {
+        grid: fine.grid,
+        p: fine.p.clone(),
+        h: fine.h.clone(),
+        delta: mg.h0,
+        film,
+        friction,
+        info: Info {
+            cycles,
+            residual_history: history,
+            load_error,
+            seconds: start.elapsed().as_secs_f64(),
+        },
+    })
+}

@@ -1,0 +1,115 @@
+//! The multigrid hierarchy and the FAS cycle with the force balance relaxed on the coarsest
+//! grid (Venner and Lubrecht 2000).
+
+use super::level::{Level, Model};
+use super::relax::{relax, LineScratch};
+use super::transfer::{coarsen, correct, interpolate_solution};
+use super::Params;
+use crate::solver::grid::{Domain, Grid};
+
+/// Levels from coarsest (index 0) to finest, the global film constant `Delta` (`h0`), and
+/// the relaxation parameters.
+#[derive(Debug)]
+pub(crate) struct Hierarchy {
+    pub levels: Vec<Level>,
+    pub model: Model,
+    pub h0: f64,
+    scratch: LineScratch,
+    params: Params,
+}
+
+impl Hierarchy {
+    /// Builds every level from `params.coarsest_level` to `params.level` on `domain`.
+    pub fn new(model: Model, domain: &Domain, params: &Params, h0: f64) -> Self {
+        let levels = (params.coarsest_level..=params.level)
+            .map(|l| Level::new(Grid::level(domain, l), &model))
+            .collect();
+        Hierarchy {
+            levels,
+            model,
+            h0,
+            scratch: LineScratch::new(),
+            params: params.clone(),
+        }
+    }
+
+    pub fn finest(&self) -> &Level {
+        self.levels
+            .last()
+            .expect("a hierarchy has at least one level")
+    }
+
+    pub fn relax(&mut self, k: usize) {
+        relax(&mut self.levels[k], &self.model, self.h0, &mut self.scratch);
+    }
+
+    /// `Delta += gain * (sum P hx hy + rg)`: too much load lifts the surfaces.
+    fn relax_force_balance(&mut self, k: usize) {
+        self.h0 += self.params.force_balance_gain * self.levels[k].load_defect();
+    }
+
+    /// Solves the coarsest level by many sweeps, with a force-balance update after each
+    /// group of sweeps.
+    fn solve_coarsest(&mut self) {
+        let groups = self.params.coarsest_force_updates.max(1);
+        let per_group = self.params.coarsest_sweeps.div_ceil(groups);
+        for _ in 0..groups {
+            for _ in 0..per_group {
+                self.relax(0);
+            }
+            self.relax_force_balance(0);
+        }
+    }
+
+    /// One FAS coarse-grid correction cycle on level `k` (`gamma = 1`: V, `2`: W).
+    pub fn cycle(&mut self, k: usize) {
+        if k == 0 {
+            self.solve_coarsest();
+            return;
+        }
+        for _ in 0..self.params.pre_sweeps {
+            self.relax(k);
+        }
+        {
+            let (lo, hi) = self.levels.split_at_mut(k);
+            let fine = &mut hi[0];
+            fine.update_film(self.h0);
+            fine.update_coefficients(&self.model);
+            coarsen(fine, &mut lo[k - 1], &self.model, self.h0);
+        }
+        for _ in 0..self.params.gamma {
+            self.cycle(k - 1);
+        }
+        {
+            let (lo, hi) = self.levels.split_at_mut(k);
+            correct(&lo[k - 1], &mut hi[0]);
+        }
+        for _ in 0..self.params.post_sweeps {
+            self.relax(k);
+        }
+    }
+
+    /// Starts level `k` from the converged level `k - 1` (full multigrid).
+    pub fn interpolate(&mut self, k: usize) {
+        let (lo, hi) = self.levels.split_at_mut(k);
+        interpolate_solution(&lo[k - 1], &mut hi[0]);
+    }
+
+    /// Makes level `k` the top of the hierarchy: its own equations, not a coarse-grid problem.
+    pub fn make_top(&mut self, k: usize) {
+        let model = self.model;
+        let level = &mut self.levels[k];
+        let g = level.grid;
+        level.hrhs = g.sample(|x, y| model.geometry(x, y));
+        level.f.iter_mut().for_each(|v| *v = 0.0);
+        level.rg = -2.0 * std::f64::consts::PI / 3.0;
+    }
+
+    /// Film, coefficients and residual norm of level `k` for its current pressure.
+    pub fn residual_norm(&mut self, k: usize) -> f64 {
+        let level = &mut self.levels[k];
+        level.update_film(self.h0);
+        level.update_coefficients(&self.model);
+        level.residual_norm()
+    }
+}

@@ -1,0 +1,150 @@
+//! Transfers between a level and the next coarser one (full coarsening, ratio 2): FAS
+//! restriction of the pressure, the film and the residual; bilinear prolongation of the
+//! correction; cubic interpolation of the solution for the full-multigrid start.
+//!
+//! Near the cavitation boundary, where a fine neighbour has `P = 0`, the pressure is
+//! injected rather than weighted, and the correction is added only where `P > 0`.
+
+use super::level::{Level, Model};
+
+/// Full-weighting stencil: centre 4, edges 2, corners 1, over 16.
+const FW: [(isize, isize, f64); 9] = [
+    (0, 0, 4.0),
+    (1, 0, 2.0),
+    (-1, 0, 2.0),
+    (0, 1, 2.0),
+    (0, -1, 2.0),
+    (1, 1, 1.0),
+    (1, -1, 1.0),
+    (-1, 1, 1.0),
+    (-1, -1, 1.0),
+];
+
+/// Sets up the coarse problem of the FAS cycle from the fine level's current state
+/// (the fine film and coefficients must be current).
+pub(crate) fn coarsen(fine: &Level, coarse: &mut Level, model: &Model, h0: f64) {
+    let (gf, gc) = (fine.grid, coarse.grid);
+    let at = |i: usize, j: usize, di: isize, dj: isize| {
+        gf.idx((i as isize + di) as usize, (j as isize + dj) as usize)
+    };
+    // Pressure: full weighting, injection near cavitation; zero on the boundary.
+    for jc in 0..gc.py() {
+        for ic in 0..gc.px() {
+            let c = gc.idx(ic, jc);
+            if ic == 0 || jc == 0 || ic == gc.nx || jc == gc.ny {
+                coarse.p[c] = 0.0;
+                continue;
+            }
+            let (i, j) = (2 * ic, 2 * jc);
+            let dry = FW
+                .iter()
+                .any(|&(di, dj, _)| fine.p[at(i, j, di, dj)] == 0.0);
+            coarse.p[c] = if dry {
+                fine.p[gf.idx(i, j)]
+            } else {
+                FW.iter()
+                    .map(|&(di, dj, w)| w * fine.p[at(i, j, di, dj)])
+                    .sum::<f64>()
+                    / 16.0
+            };
+        }
+    }
+    coarse.pold.copy_from_slice(&coarse.p);
+    // Film: injection; the coarse film equation is shifted so that it reproduces it.
+    for jc in 0..gc.py() {
+        for ic in 0..gc.px() {
+            coarse.h[gc.idx(ic, jc)] = fine.h[gf.idx(2 * ic, 2 * jc)];
+        }
+    }
+    coarse.deformation.apply(&coarse.p, &mut coarse.w);
+    for k in 0..gc.len() {
+        coarse.hrhs[k] = coarse.h[k] - h0 - coarse.w[k];
+    }
+    coarse.update_coefficients(model);
+    // Reynolds: restricted residual (zero where the fine pressure is zero) plus L_c(P_c).
+    for jc in 1..gc.ny {
+        for ic in 1..gc.nx {
+            let (i, j) = (2 * ic, 2 * jc);
+            let mut r = 0.0;
+            for &(di, dj, w) in &FW {
+                let (fi, fj) = ((i as isize + di) as usize, (j as isize + dj) as usize);
+                let centre = di == 0 && dj == 0;
+                if centre || fine.p[gf.idx(fi, fj)] > 0.0 {
+                    r += w * fine.residual(fi, fj);
+                }
+            }
+            coarse.f[gc.idx(ic, jc)] = r / 16.0 + coarse.operator(&coarse.p, ic, jc);
+        }
+    }
+    // Force balance.
+    coarse.rg = fine.rg + gf.integrate(&fine.p) - gc.integrate(&coarse.p);
+}
+
+/// Adds the bilinearly interpolated coarse-grid correction `P_c - P_c,old` to the fine
+/// pressure where it is positive, then projects on `P >= 0`.
+pub(crate) fn correct(coarse: &Level, fine: &mut Level) {
+    let (gf, gc) = (fine.grid, coarse.grid);
+    let e = |ic: usize, jc: usize| {
+        let k = gc.idx(ic, jc);
+        coarse.p[k] - coarse.pold[k]
+    };
+    for j in 1..gf.ny {
+        for i in 1..gf.nx {
+            let k = gf.idx(i, j);
+            if fine.p[k] <= 0.0 {
+                continue;
+            }
+            let (ic, jc) = (i / 2, j / 2);
+            let corr = match (i % 2, j % 2) {
+                (0, 0) => e(ic, jc),
+                (1, 0) => 0.5 * (e(ic, jc) + e(ic + 1, jc)),
+                (0, 1) => 0.5 * (e(ic, jc) + e(ic, jc + 1)),
+                _ => 0.25 * (e(ic, jc) + e(ic + 1, jc) + e(ic, jc + 1) + e(ic + 1, jc + 1)),
+            };
+            fine.p[k] = (fine.p[k] + corr).max(0.0);
+        }
+    }
+}
+
+/// Four-point cubic interpolation of one line of values at the even points (odd points are
+/// filled; one-sided near the ends). `get(k)`/`set(k, v)` address the line's `n + 1` points.
+fn cubic_line(n: usize, get: impl Fn(usize) -> f64, mut set: impl FnMut(usize, f64)) {
+    for k in (1..n).step_by(2) {
+        let v = if k == 1 {
+            (5.0 * get(0) + 15.0 * get(2) - 5.0 * get(4) + get(6)) / 16.0
+        } else if k == n - 1 {
+            (5.0 * get(n) + 15.0 * get(n - 2) - 5.0 * get(n - 4) + get(n - 6)) / 16.0
+        } else {
+            (-get(k - 3) + 9.0 * get(k - 1) + 9.0 * get(k + 1) - get(k + 3)) / 16.0
+        };
+        set(k, v);
+    }
+}
+
+/// Full-multigrid start: the converged coarse pressure interpolated (cubic) to the fine grid,
+/// projected on `P >= 0`.
+pub(crate) fn interpolate_solution(coarse: &Level, fine: &mut Level) {
+    let (gf, gc) = (fine.grid, coarse.grid);
+    fine.p.iter_mut().for_each(|v| *v = 0.0);
+    for jc in 0..gc.py() {
+        for ic in 0..gc.px() {
+            fine.p[gf.idx(2 * ic, 2 * jc)] = coarse.p[gc.idx(ic, jc)];
+        }
+    }
+    let p = &mut fine.p;
+    for i in (0..=gf.nx).step_by(2) {
+        let col: Vec<f64> = (0..gf.py()).map(|j| p[gf.idx(i, j)]).collect();
+        cubic_line(gf.ny, |j| col[j], |j, v| p[gf.idx(i, j)] = v);
+    }
+    for j in 0..gf.py() {
+        let row: Vec<f64> = (0..gf.px()).map(|i| p[gf.idx(i, j)]).collect();
+        cubic_line(gf.nx, |i| row[i], |i, v| p[gf.idx(i, j)] = v);
+    }
+    for j in 0..gf.py() {
+        for i in 0..gf.px() {
+            let k = gf.idx(i, j);
+            let boundary = i == 0 || j == 0 || i == gf.nx || j == gf.ny;
+            p[k] = if boundary { 0.0 } else { p[k].max(0.0) };
+        }
+    }
+}
