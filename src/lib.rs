@@ -8,5 +8,6 @@
 // loops obscure the stencils they implement.
 #![allow(clippy::needless_range_loop)]
 
+pub mod artefacts;
 pub mod physics;
 pub mod solver;

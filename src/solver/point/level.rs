@@ -184,18 +184,24 @@ impl Level {
     }
 
     /// Mean absolute residual over the pressurised interior nodes (film and coefficients
-    /// must be current).
-    pub fn residual_norm(&self) -> f64 {
+    /// must be current), and where the largest one is.
+    pub fn residual_norm(&self) -> (f64, (f64, f64)) {
         let g = &self.grid;
         let mut sum = 0.0;
+        let (mut max, mut at) = (-1.0, (0.0, 0.0));
         for j in 1..g.ny {
             for i in 1..g.nx {
                 if self.p[g.idx(i, j)] > 0.0 {
-                    sum += self.residual(i, j).abs();
+                    let r = self.residual(i, j).abs();
+                    sum += r;
+                    if r > max {
+                        max = r;
+                        at = (g.x(i), g.y(j));
+                    }
                 }
             }
         }
-        sum / ((g.nx - 1) * (g.ny - 1)) as f64
+        (sum / ((g.nx - 1) * (g.ny - 1)) as f64, at)
     }
 
     /// Force-balance defect `sum P hx hy + rg`.

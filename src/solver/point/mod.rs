@@ -64,6 +64,12 @@ pub struct Params {
     pub max_cycles: usize,
     /// Convergence: the mean absolute Reynolds residual on the finest level. Default 1e-6.
     pub tolerance: f64,
+    /// Convergence, alternatively: the mean absolute change of `P` over one finest cycle.
+    /// On fine grids the residual can stall at a few nodes of tiny pressure on the
+    /// cavitation boundary that flip in and out of it every cycle, with no effect on any
+    /// output; the pressure change still measures the iteration error. Default 3e-7, which
+    /// leaves the Table 4 film within 1e-4 (level 7) and 2e-5 (level 8) of its converged value.
+    pub pressure_tolerance: f64,
     /// Convergence: relative force-balance error. Default 1e-4.
     pub load_tolerance: f64,
     /// Compute the rolling (Poiseuille) part of the friction. Default true.
@@ -89,6 +95,7 @@ impl Default for Params {
             fmg_cycles: 2,
             max_cycles: 40,
             tolerance: 1e-6,
+            pressure_tolerance: 3e-7,
             load_tolerance: 1e-4,
             rolling_friction: true,
             require_positive_film: true,
@@ -117,8 +124,12 @@ pub struct Progress {
     pub residual: f64,
     /// Relative force-balance error after the cycle.
     pub load_error: f64,
+    /// Mean absolute change of `P` over the cycle.
+    pub pressure_change: f64,
     /// Central film `H` after the cycle.
     pub h_central: f64,
+    /// `(X, Y)` of the largest residual.
+    pub worst_at: (f64, f64),
 }
 
 /// A converged point-contact solution.
@@ -181,6 +192,7 @@ pub fn solve(
     mg.make_top(0);
     mg.cycle(0);
     let mut history = Vec::new();
+    let mut converged = false;
     for k in 1..=top {
         mg.make_top(k);
         mg.interpolate(k);
@@ -190,24 +202,36 @@ pub fn solve(
             params.fmg_cycles
         };
         for cycle in 1..=cycles {
+            let before = mg.levels[k].p.clone();
             mg.cycle(k);
-            let residual = mg.residual_norm(k);
+            let (residual, worst_at) = mg.residual_norm(k);
             let level = &mg.levels[k];
             let load_error = (level.load_defect() / target).abs();
-            if k == top {
-                history.push(residual);
-            }
+            let dp = level
+                .p
+                .iter()
+                .zip(&before)
+                .map(|(a, b)| (a - b).abs())
+                .sum::<f64>()
+                / level.p.len() as f64;
             if let Some(obs) = observer.as_mut() {
                 let (i, j) = level.grid.nearest(0.0, 0.0);
                 let h_central = level.h[level.grid.idx(i, j)];
+                let level = params.coarsest_level + k as u32;
                 obs(&Progress {
-                    level: params.coarsest_level + k as u32,
+                    level,
                     cycle,
                     residual,
                     load_error,
+                    pressure_change: dp,
                     h_central,
+                    worst_at,
                 });
             }
+            if k < top {
+                continue;
+            }
+            history.push(residual);
             if !residual.is_finite() || !mg.h0.is_finite() || level.p.iter().any(|v| !v.is_finite())
             {
                 return Err(SolveError::NonFinite {
@@ -218,23 +242,21 @@ pub fn solve(
             }
             // A residual a thousand times above the best one seen is divergence, not noise.
             let best = history.iter().cloned().fold(f64::INFINITY, f64::min);
-            if k == top && residual > DIVERGENCE_FACTOR * best {
-                return Err(SolveError::NotConverged {
-                    cycles: cycle,
-                    tolerance: params.tolerance,
-                    residual_history: history,
-                });
+            if residual > DIVERGENCE_FACTOR * best {
+                break;
             }
-            if k == top && residual < params.tolerance && load_error < params.load_tolerance {
+            if (residual < params.tolerance || dp < params.pressure_tolerance)
+                && load_error < params.load_tolerance
+            {
+                converged = true;
                 break;
             }
         }
     }
     let fine = mg.finest();
     let load_error = (fine.load_defect() / target).abs();
-    let residual = history.last().copied().unwrap_or(f64::INFINITY);
     let cycles = history.len();
-    if !(residual < params.tolerance && load_error < params.load_tolerance) {
+    if !converged {
         return Err(SolveError::NotConverged {
             cycles,
             tolerance: params.tolerance,

@@ -105,8 +105,9 @@ impl Hierarchy {
         level.rg = -2.0 * std::f64::consts::PI / 3.0;
     }
 
-    /// Film, coefficients and residual norm of level `k` for its current pressure.
-    pub fn residual_norm(&mut self, k: usize) -> f64 {
+    /// Film, coefficients and residual norm of level `k` for its current pressure, and where
+    /// the largest residual is.
+    pub fn residual_norm(&mut self, k: usize) -> (f64, (f64, f64)) {
         let level = &mut self.levels[k];
         level.update_film(self.h0);
         level.update_coefficients(&self.model);

@@ -1,0 +1,261 @@
+//! Command-line flags, turned once into validated cases and solver parameters: nothing below
+//! this module sees a clap type.
+
+use anyhow::{anyhow, bail, Result};
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use repro::physics::case::{Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec};
+use repro::physics::density::DensityLaw;
+use repro::physics::rheology::Rheology;
+use repro::physics::viscosity::ViscosityLaw;
+use repro::solver::grid::Domain;
+use repro::solver::point::{Params, MAX_LEVEL, MIN_LEVEL};
+use std::path::PathBuf;
+
+/// Regenerates "A Generalized Traction Curve for EHL Contacts" (Jacod, Venner and Lugt,
+/// ASME J. Tribology 2001) from first principles: EHL solves of elliptical contacts with an
+/// Eyring lubricant by multigrid, their friction, and the mastercurve mu-bar = asinh(tau_c/5).
+#[derive(Debug, Parser)]
+#[command(name = "repro", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Solve one elliptical contact and print film thickness and reduced friction.
+    ///
+    /// Either in Moes groups (--m, --l, --s-bar; Barus, incompressible, Eyring by default) or
+    /// physically (--lubricant or --alpha/--eta0, --ph, --um, --slip, --tau0; Roelands,
+    /// Dowson-Higginson, Eyring by default, the physics of Figs. 4-6).
+    Solve(Box<SolveArgs>),
+    /// Table 4: grid convergence of the Appendix case at levels 5-8, beside the paper's values.
+    Table4(Table4Args),
+    /// List the targets.
+    List,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum ViscosityArg {
+    Barus,
+    Roelands,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum DensityArg {
+    Incompressible,
+    DowsonHigginson,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum RheologyArg {
+    Eyring,
+    Newtonian,
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum DomainArg {
+    /// -2.5 <= X <= 1.5, -2 <= Y <= 2: the paper's (reproduces Table 4).
+    Paper,
+    /// -4.5 <= X <= 1.5, -3 <= Y <= 3: a longer inlet for lightly loaded contacts (M < 100).
+    Wide,
+}
+
+#[derive(Debug, Args)]
+#[command(allow_negative_numbers = true)]
+pub struct SolveArgs {
+    // Dimensionless form.
+    /// Moes load parameter M (dimensionless form).
+    #[arg(long, help_heading = "Dimensionless form")]
+    pub m: Option<f64>,
+    /// Moes lubricant parameter L.
+    #[arg(long, help_heading = "Dimensionless form")]
+    pub l: Option<f64>,
+    /// Dimensionless slip S-bar, Eq. (9); 0 is pure rolling.
+    #[arg(long = "s-bar", help_heading = "Dimensionless form")]
+    pub s_bar: Option<f64>,
+    /// Ellipticity ratio D = Rx/Ry in (0, 1].
+    #[arg(long, default_value_t = 1.0, help_heading = "Dimensionless form")]
+    pub d: f64,
+
+    // Physical form.
+    /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
+    #[arg(long, help_heading = "Physical form")]
+    pub lubricant: Option<String>,
+    /// Temperature, C (with --lubricant).
+    #[arg(long, help_heading = "Physical form")]
+    pub temperature: Option<f64>,
+    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant).
+    #[arg(long, help_heading = "Physical form")]
+    pub alpha: Option<f64>,
+    /// Maximum Hertzian pressure p_H, Pa.
+    #[arg(long, help_heading = "Physical form")]
+    pub ph: Option<f64>,
+    /// Mean velocity u_m = (u1 + u2)/2, m/s.
+    #[arg(long, help_heading = "Physical form")]
+    pub um: Option<f64>,
+    /// Eyring stress tau0, Pa.
+    #[arg(long, help_heading = "Physical form")]
+    pub tau0: Option<f64>,
+    /// Reduced radius in the rolling direction Rx, m.
+    #[arg(long, default_value_t = 1.03875e-2, help_heading = "Physical form")]
+    pub rx: f64,
+    /// Reduced radius across the rolling direction Ry, m (default: Rx, a circular contact).
+    #[arg(long, help_heading = "Physical form")]
+    pub ry: Option<f64>,
+    /// Reduced modulus E', Pa.
+    #[arg(
+        long = "e-prime",
+        default_value_t = 226e9,
+        help_heading = "Physical form"
+    )]
+    pub e_prime: f64,
+
+    // Both forms.
+    /// Slide-to-roll ratio S in [0, 2]. In the dimensionless form it fixes, with S-bar, the
+    /// Eyring stress and so the size of the rolling friction in mu-bar (default 0.01 there).
+    #[arg(long)]
+    pub slip: Option<f64>,
+    /// Ambient viscosity eta0, Pa s (physical form without --lubricant; dimensionless form with
+    /// Roelands).
+    #[arg(long)]
+    pub eta0: Option<f64>,
+    /// Viscosity-pressure law.
+    #[arg(long, value_enum)]
+    pub viscosity: Option<ViscosityArg>,
+    /// Density-pressure law.
+    #[arg(long, value_enum)]
+    pub density: Option<DensityArg>,
+    /// Rheology.
+    #[arg(long, value_enum)]
+    pub rheology: Option<RheologyArg>,
+
+    // Numerics and output.
+    /// Grid level: 2^(level+1) points per direction (7 is the paper's 256 x 256).
+    #[arg(long, default_value_t = 7, help_heading = "Numerics")]
+    pub level: u32,
+    /// Computational domain.
+    #[arg(long, value_enum, default_value = "paper", help_heading = "Numerics")]
+    pub domain: DomainArg,
+    /// Most multigrid cycles on the finest level.
+    #[arg(long = "max-cycles", default_value_t = 40, help_heading = "Numerics")]
+    pub max_cycles: usize,
+    /// Skip the rolling (Poiseuille) part of the friction.
+    #[arg(long = "no-rolling", help_heading = "Numerics")]
+    pub no_rolling: bool,
+    /// Print one JSON object instead of the summary.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    /// Write the pressure and film fields to this CSV file (columns X, Y, P, H).
+    #[arg(long, help_heading = "Output")]
+    pub fields: Option<PathBuf>,
+    /// No per-cycle progress on stderr.
+    #[arg(long, short, help_heading = "Output")]
+    pub quiet: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct Table4Args {
+    /// Levels to solve (default: those of cases/table4.toml, 5 to 8).
+    #[arg(long, value_delimiter = ',')]
+    pub levels: Option<Vec<u32>>,
+    /// Output folder.
+    #[arg(long, default_value = "figures")]
+    pub out: PathBuf,
+    /// No per-cycle progress on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// Checks a grid level flag.
+pub fn check_level(flag: &str, level: u32) -> Result<u32> {
+    if (MIN_LEVEL..=MAX_LEVEL).contains(&level) {
+        Ok(level)
+    } else {
+        bail!("{flag}: level {level} outside the supported range {MIN_LEVEL}..={MAX_LEVEL}")
+    }
+}
+
+impl SolveArgs {
+    /// The case the flags describe (which form, and its physics).
+    pub fn case(&self) -> Result<Case> {
+        let dimensionless = self.m.is_some() || self.l.is_some() || self.s_bar.is_some();
+        let physical = self.lubricant.is_some()
+            || self.ph.is_some()
+            || self.um.is_some()
+            || self.tau0.is_some()
+            || self.alpha.is_some();
+        let need = |v: Option<f64>, flag: &str| v.ok_or_else(|| anyhow!("{flag}: required"));
+        let spec = match (dimensionless, physical) {
+            (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--ph/--um/--tau0 (physical form) cannot be mixed"),
+            (false, false) => bail!("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help"),
+            (true, false) => Spec::Dimensionless(DimensionlessCase {
+                m: need(self.m, "--m")?,
+                l: need(self.l, "--l")?,
+                s_bar: need(self.s_bar, "--s-bar")?,
+                d: self.d,
+                slip: self.slip.unwrap_or(0.01),
+                eta0_pa_s: self.eta0,
+                ph_pa: self.ph,
+            }),
+            (false, true) => {
+                let lubricant = match (&self.lubricant, self.alpha) {
+                    (Some(name), None) => LubricantSpec::Named {
+                        lubricant: name.clone(),
+                        temperature_c: need(self.temperature, "--temperature")?,
+                    },
+                    (None, Some(alpha)) => LubricantSpec::Given { alpha_per_pa: alpha, eta0_pa_s: need(self.eta0, "--eta0")? },
+                    (Some(_), Some(_)) => bail!("--lubricant and --alpha cannot be mixed"),
+                    (None, None) => bail!("--lubricant: required (or --alpha and --eta0)"),
+                };
+                Spec::Physical(PhysicalCase {
+                    lubricant,
+                    ph_pa: need(self.ph, "--ph")?,
+                    um_m_s: need(self.um, "--um")?,
+                    slip: need(self.slip, "--slip")?,
+                    tau0_pa: need(self.tau0, "--tau0")?,
+                    rx_m: self.rx,
+                    ry_m: self.ry.unwrap_or(self.rx),
+                    e_prime_pa: self.e_prime,
+                })
+            }
+        };
+        let defaults = if dimensionless {
+            Physics::default()
+        } else {
+            Physics::figs_4_to_7()
+        };
+        let physics = Physics {
+            viscosity: match self.viscosity {
+                Some(ViscosityArg::Barus) => ViscosityLaw::Barus,
+                Some(ViscosityArg::Roelands) => ViscosityLaw::Roelands,
+                None => defaults.viscosity,
+            },
+            density: match self.density {
+                Some(DensityArg::Incompressible) => DensityLaw::Incompressible,
+                Some(DensityArg::DowsonHigginson) => DensityLaw::DowsonHigginson,
+                None => defaults.density,
+            },
+            rheology: match self.rheology {
+                Some(RheologyArg::Eyring) => Rheology::Eyring,
+                Some(RheologyArg::Newtonian) => Rheology::Newtonian,
+                None => defaults.rheology,
+            },
+        };
+        Ok(Case { spec, physics })
+    }
+
+    /// Solver parameters from the numerics flags.
+    pub fn params(&self) -> Result<Params> {
+        Ok(Params {
+            level: check_level("--level", self.level)?,
+            domain: match self.domain {
+                DomainArg::Paper => Domain::default(),
+                DomainArg::Wide => Domain::wide(),
+            },
+            max_cycles: self.max_cycles,
+            rolling_friction: !self.no_rolling,
+            ..Params::default()
+        })
+    }
+}

@@ -1,0 +1,172 @@
+//! What the commands print and write.
+
+use crate::cli::{SolveArgs, Table4Args};
+use anyhow::{Context, Result};
+use repro::artefacts::{csv, table4};
+use repro::physics::case::Problem;
+use repro::physics::lubricant::LubricantTable;
+use repro::solver::point::{solve as solve_point, PointSolution, Progress};
+use serde_json::json;
+
+/// Prints one progress line per cycle to stderr.
+fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
+    move |p: &Progress| {
+        if !quiet {
+            eprintln!(
+                "  level {:>2} cycle {:>3}: residual {:.3e}, load error {:.1e}, Hc {:.5e}",
+                p.level, p.cycle, p.residual, p.load_error, p.h_central
+            );
+        }
+    }
+}
+
+/// Prefixes a case error with the flag it names.
+fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
+    use repro::physics::case::CaseError;
+    use repro::physics::lubricant::LubricantError;
+    match e {
+        CaseError::Field { field, message } => anyhow::anyhow!("--{field}: {message}"),
+        CaseError::Lubricant(l @ LubricantError::Unknown { .. }) => {
+            anyhow::anyhow!("--lubricant: {l}")
+        }
+        CaseError::Lubricant(l @ LubricantError::Temperature { .. }) => {
+            anyhow::anyhow!("--temperature: {l}")
+        }
+        other => anyhow::anyhow!("{other}"),
+    }
+}
+
+/// `repro solve`: returns false when the solve failed (after printing why).
+pub fn solve(args: &SolveArgs) -> Result<bool> {
+    let case = args.case()?;
+    let params = args.params()?;
+    let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
+    let mut printer = progress_printer(args.quiet);
+    let solution = match solve_point(&problem, &params, Some(&mut printer)) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("solve failed: {e}");
+            eprintln!("residual history: {:?}", e.residual_history());
+            return Ok(false);
+        }
+    };
+    if let Some(path) = &args.fields {
+        csv::write_atomic(path, &fields_csv(&solution))
+            .with_context(|| format!("--fields: cannot write {}", path.display()))?;
+    }
+    let tau_c = problem.tau_c();
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&summary_json(&problem, &params.level, &solution, tau_c))?
+        );
+    } else {
+        print!("{}", summary_text(&problem, &solution, tau_c));
+    }
+    Ok(true)
+}
+
+fn summary_json(
+    problem: &Problem,
+    level: &u32,
+    s: &PointSolution,
+    tau_c: f64,
+) -> serde_json::Value {
+    let g = &problem.groups;
+    json!({
+        "level": level,
+        "m": g.m, "l": g.l, "s_bar": g.s_bar, "d": g.d, "slip": g.slip,
+        "alpha_bar": g.alpha_bar, "lambda": g.lambda, "kappa": g.kappa, "n": g.n,
+        "viscosity": problem.physics().viscosity, "density": problem.physics().density, "rheology": problem.physics().rheology,
+        "h_central": s.film.h_central, "h_min": s.film.h_min,
+        "hc_moes": s.film.hc_moes, "hmin_moes": s.film.hmin_moes,
+        "mu_bar_sliding": s.friction.sliding, "mu_bar_rolling": s.friction.rolling, "mu_bar_total": s.friction.total(),
+        "tau_c": tau_c, "mu_bar_eq13": (tau_c / 5.0).asinh(),
+        "cycles": s.info.cycles, "residual": s.info.residual(), "load_error": s.info.load_error,
+        "residual_history": s.info.residual_history, "seconds": s.info.seconds,
+    })
+}
+
+fn summary_text(problem: &Problem, s: &PointSolution, tau_c: f64) -> String {
+    let g = &problem.groups;
+    let ph = problem.physics();
+    let rolling = s
+        .friction
+        .rolling
+        .map(|r| format!("{r:.4}"))
+        .unwrap_or_else(|| "not computed".into());
+    format!(
+        "case        M = {:.4}, L = {:.4}, S-bar = {:.4e}, D = {:.4}, S = {}\n\
+         groups      alpha-bar = {:.4}, lambda = {:.4e}, kappa = {:.4}, N = {:.4e}\n\
+         physics     {:?}, {:?}, {:?}\n\
+         grid        {} x {}, {} cycles, residual {:.2e}, load error {:.1e}, {:.2} s\n\
+         film        Hc = {:.5e} (Moes {:.4}), Hmin = {:.5e} (Moes {:.4})  [H = h/c]\n\
+         friction    mu-bar sliding = {:.4}, rolling = {}, total = {:.4}\n\
+         mastercurve tau_c = {:.4e}, Eq. (13) asinh(tau_c/5) = {:.4}\n",
+        g.m,
+        g.l,
+        g.s_bar,
+        g.d,
+        g.slip,
+        g.alpha_bar,
+        g.lambda,
+        g.kappa,
+        g.n,
+        ph.viscosity,
+        ph.density,
+        ph.rheology,
+        s.grid.nx,
+        s.grid.ny,
+        s.info.cycles,
+        s.info.residual(),
+        s.info.load_error,
+        s.info.seconds,
+        s.film.h_central,
+        s.film.hc_moes,
+        s.film.h_min,
+        s.film.hmin_moes,
+        s.friction.sliding,
+        rolling,
+        s.friction.total(),
+        tau_c,
+        (tau_c / 5.0).asinh(),
+    )
+}
+
+fn fields_csv(s: &PointSolution) -> String {
+    let g = &s.grid;
+    let mut out = String::from("X,Y,P,H\n");
+    for j in 0..g.py() {
+        for i in 0..g.px() {
+            let k = g.idx(i, j);
+            out.push_str(&format!(
+                "{},{},{},{}\n",
+                csv::num(g.x(i)),
+                csv::num(g.y(j)),
+                csv::num(s.p[k]),
+                csv::num(s.h[k])
+            ));
+        }
+    }
+    out
+}
+
+/// `repro table4`: returns false when a level failed.
+pub fn table4(args: &Table4Args) -> Result<bool> {
+    let spec = table4::Table4Case::shipped().map_err(anyhow::Error::msg)?;
+    let levels = match &args.levels {
+        Some(l) => l
+            .iter()
+            .map(|&v| crate::cli::check_level("--levels", v))
+            .collect::<Result<Vec<_>>>()?,
+        None => spec.levels.clone(),
+    };
+    let mut printer = progress_printer(args.quiet);
+    let rows = table4::compute(&spec, &levels, |p| printer(p)).map_err(anyhow::Error::msg)?;
+    let path = args.out.join("table4.csv");
+    csv::write_atomic(&path, &table4::to_csv(&rows))
+        .with_context(|| format!("--out: cannot write {}", path.display()))?;
+    print!("{}", table4::to_text(&rows));
+    println!("wrote {}", path.display());
+    Ok(rows.iter().all(|r| r.outcome.is_ok()))
+}
