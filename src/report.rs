@@ -13,8 +13,8 @@ fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
     move |p: &Progress| {
         if !quiet {
             eprintln!(
-                "  level {:>2} cycle {:>3}: residual {:.3e}, load error {:.1e}, Hc {:.5e}",
-                p.level, p.cycle, p.residual, p.load_error, p.h_central
+                "  level {:>2} cycle {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}",
+                p.level, p.cycle, p.residual, p.worst_at.0, p.worst_at.1, p.pressure_change, p.load_error, p.h_central
             );
         }
     }

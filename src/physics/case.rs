@@ -453,6 +453,16 @@ mod tests {
     }
 
     #[test]
+    fn centre_stress_of_the_eq10_film_is_half_tau_c() {
+        // SPEC.md: with the Hertzian pressure and the Eq. (10) film, the Couette argument at
+        // the centre, N eta_bar(p_H) S / H, is tau_c / 2: an identity of N and the Moes units.
+        let p = Problem::from_case(&worked_case(), &LubricantTable::table1()).unwrap();
+        let h = super::super::film::hc_eq10(p.groups.m, p.groups.l) / p.groups.moes_film_scale;
+        let centre = p.eyring_n_s() * p.viscosity.eta_bar(1.0) / h;
+        assert!((centre / (p.tau_c() / 2.0) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
     fn bad_fields_are_named() {
         let lubs = LubricantTable::table1();
         let mut c = worked_case();

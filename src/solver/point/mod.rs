@@ -189,17 +189,19 @@ pub fn solve(
         let grid = l0.grid;
         l0.p = grid.sample(crate::physics::hertz::Hertz::pressure);
     }
-    mg.make_top(0);
-    mg.cycle(0);
     let mut history = Vec::new();
     let mut converged = false;
-    for k in 1..=top {
+    for k in 0..=top {
         mg.make_top(k);
-        mg.interpolate(k);
-        let cycles = if k == top {
-            params.max_cycles
-        } else {
-            params.fmg_cycles
+        if k > 0 {
+            mg.interpolate(k);
+        }
+        // The coarsest level alone is solved once (its "cycle" is a full solve) unless it is
+        // the only level.
+        let cycles = match (k == top, k == 0) {
+            (true, _) => params.max_cycles,
+            (false, true) => 1,
+            (false, false) => params.fmg_cycles,
         };
         for cycle in 1..=cycles {
             let before = mg.levels[k].p.clone();

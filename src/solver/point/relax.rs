@@ -97,6 +97,11 @@ fn relax_line(
         let xi = level.xi(i, j);
         let [xw, xe, _, _] = xi;
         let sum: f64 = xi.iter().sum();
+        // Gauss-Seidel only where the Poiseuille coupling across lines is strong: with Eyring
+        // shear thinning the conductance along X stays large in the contact while the one
+        // across lines is small, and there the elastic coupling between lines, which the line
+        // solve does not see, needs the distributive scheme (the book's switch on any of the
+        // four coefficients does not converge for M = 1000, L = 15, S-bar = 1).
         let gs = xi[2].max(xi[3]) > XI_SWITCH;
         s.gauss_seidel[r] = gs;
         let dk = if gs { dk_gs } else { dk_jd };

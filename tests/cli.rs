@@ -1,0 +1,195 @@
+//! The `repro` binary: flags, JSON output and errors that name the flag.
+
+use std::process::Command;
+
+fn repro(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
+        .args(args)
+        .output()
+        .expect("run repro");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn solve_json_has_every_documented_key() {
+    let (code, out, err) = repro(&[
+        "solve", "--m", "100", "--l", "5", "--s-bar", "0.1", "--level", "4", "--json", "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    for key in [
+        "level",
+        "m",
+        "l",
+        "s_bar",
+        "alpha_bar",
+        "lambda",
+        "kappa",
+        "h_central",
+        "h_min",
+        "hc_moes",
+        "hmin_moes",
+        "mu_bar_sliding",
+        "mu_bar_rolling",
+        "mu_bar_total",
+        "tau_c",
+        "cycles",
+        "residual",
+        "seconds",
+    ] {
+        assert!(v.get(key).is_some(), "missing key {key}");
+    }
+    assert_eq!(v["level"], 4);
+    assert!((v["m"].as_f64().unwrap() - 100.0).abs() < 1e-9);
+}
+
+#[test]
+fn physical_form_reports_the_worked_case_groups() {
+    let (code, out, err) = repro(&[
+        "solve",
+        "--lubricant",
+        "mineral-oil-a",
+        "--temperature",
+        "40",
+        "--ph",
+        "3e9",
+        "--um",
+        "12",
+        "--slip",
+        "0.005",
+        "--tau0",
+        "4e6",
+        "--level",
+        "6",
+        "--json",
+        "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    // Appendix: M = 1738, L = 14.79 (the paper's last digit of M is truncated: 1738.8).
+    assert!((v["m"].as_f64().unwrap() - 1738.0).abs() < 1.0);
+    assert!((v["l"].as_f64().unwrap() - 14.79).abs() < 0.005);
+    assert_eq!(v["viscosity"], "roelands");
+    assert_eq!(v["density"], "dowson-higginson");
+}
+
+#[test]
+fn bad_flags_get_one_line_naming_the_flag() {
+    let base = [
+        "solve",
+        "--lubricant",
+        "mineral-oil-a",
+        "--um",
+        "12",
+        "--tau0",
+        "4e6",
+    ];
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["--temperature", "40", "--ph", "3e9", "--slip", "2.5"],
+            "--slip",
+        ),
+        (
+            &["--temperature", "40", "--ph", "-3e9", "--slip", "0.01"],
+            "--ph",
+        ),
+        (
+            &[
+                "--temperature",
+                "40",
+                "--ph",
+                "3e9",
+                "--slip",
+                "0.01",
+                "--level",
+                "12",
+            ],
+            "--level",
+        ),
+        (
+            &[
+                "--temperature",
+                "40",
+                "--ph",
+                "3e9",
+                "--slip",
+                "0.01",
+                "--ry",
+                "5e-3",
+            ],
+            "--ry",
+        ),
+        (
+            &["--temperature", "150", "--ph", "3e9", "--slip", "0.01"],
+            "--temperature",
+        ),
+    ];
+    for (extra, flag) in cases {
+        let mut args: Vec<&str> = base.to_vec();
+        args.extend_from_slice(extra);
+        let (code, _, err) = repro(&args);
+        assert_ne!(code, 0, "{extra:?} must fail");
+        assert!(
+            err.starts_with(&format!("error: {flag}")),
+            "{extra:?}: {err}"
+        );
+        assert_eq!(err.trim_end().lines().count(), 1, "one line: {err}");
+    }
+    let (code, _, err) = repro(&[
+        "solve",
+        "--lubricant",
+        "castor-oil",
+        "--temperature",
+        "40",
+        "--ph",
+        "3e9",
+        "--um",
+        "1",
+        "--slip",
+        "0",
+        "--tau0",
+        "1e6",
+    ]);
+    assert_ne!(code, 0);
+    assert!(
+        err.contains("--lubricant") && err.contains("castor-oil"),
+        "{err}"
+    );
+    let (code, _, err) = repro(&["solve", "--m", "-5", "--l", "5", "--s-bar", "0.1"]);
+    assert_ne!(code, 0);
+    assert!(err.contains("--m"), "{err}");
+}
+
+#[test]
+fn failed_solve_exits_non_zero_with_the_history() {
+    let (code, _, err) = repro(&[
+        "solve",
+        "--m",
+        "1000",
+        "--l",
+        "15",
+        "--s-bar",
+        "1",
+        "--level",
+        "5",
+        "--max-cycles",
+        "2",
+        "-q",
+    ]);
+    assert_eq!(code, 1);
+    assert!(
+        err.contains("not converged") && err.contains("residual history"),
+        "{err}"
+    );
+}
+
+#[test]
+fn list_names_the_targets() {
+    let (code, out, _) = repro(&["list"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("table4"));
+}

@@ -1,0 +1,4 @@
+//! Integration tests: one binary, so the crate links once.
+
+mod cli;
+mod point_contact;
