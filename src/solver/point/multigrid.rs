@@ -14,6 +14,10 @@ pub(crate) struct Hierarchy {
     pub levels: Vec<Level>,
     pub model: Model,
     pub h0: f64,
+    /// Current gain of the force-balance update (adapted, see `relax_force_balance`).
+    gain: f64,
+    /// The load defect at the previous update.
+    last_defect: f64,
     scratch: LineScratch,
     params: Params,
 }
@@ -28,6 +32,8 @@ impl Hierarchy {
             levels,
             model,
             h0,
+            gain: params.force_balance_gain,
+            last_defect: 0.0,
             scratch: LineScratch::new(),
             params: params.clone(),
         }
@@ -43,9 +49,19 @@ impl Hierarchy {
         relax(&mut self.levels[k], &self.model, self.h0, &mut self.scratch);
     }
 
-    /// `Delta += gain * (sum P hx hy + rg)`: too much load lifts the surfaces.
+    /// `Delta += gain * (sum P hx hy + rg)`: too much load lifts the surfaces. The load of a
+    /// heavily loaded, highly viscous contact is very stiff in `Delta`; where the defect changes
+    /// sign between updates the gain overshot and is halved, where it keeps its sign the gain
+    /// grows back by 10 % towards `force_balance_gain`.
     fn relax_force_balance(&mut self, k: usize) {
-        self.h0 += self.params.force_balance_gain * self.levels[k].load_defect();
+        let defect = self.levels[k].load_defect();
+        if defect * self.last_defect < 0.0 {
+            self.gain *= 0.5;
+        } else {
+            self.gain = (self.gain * 1.1).min(self.params.force_balance_gain);
+        }
+        self.last_defect = defect;
+        self.h0 += self.gain * defect;
     }
 
     /// Solves the coarsest level by many sweeps, with a force-balance update after each
