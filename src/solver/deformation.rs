@@ -8,6 +8,7 @@
 //! obviously correct O(n^4) reference the tests hold it to.
 
 use super::grid::Grid;
+use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 use std::f64::consts::PI;
@@ -87,16 +88,26 @@ pub fn direct_sum(grid: &Grid, kernel: &Kernel, p: &[f64]) -> Vec<f64> {
 /// The pressure vanishes on the boundary nodes, so the sources are the interior nodes
 /// `1..nx` and the targets all nodes `0..=nx`: every offset lies in `-(nx-1)..=nx-1`, and a
 /// periodic grid of `2 nx` points holds the linear convolution without wrap-around.
+///
+/// Rows are transformed real-to-complex (only the `ny - 1` rows that carry pressure), the
+/// half spectrum is kept column-major so that the column transforms run on contiguous data,
+/// and only the `ny + 1` rows of the grid are transformed back.
 pub struct Deformation {
     grid: Grid,
     n1: usize,
     n2: usize,
+    /// Kernel spectrum, column-major: `(kx, ky)` at `kx * n2 + ky`, `kx <= n1/2`.
     spectrum: Vec<Complex<f64>>,
-    fwd1: Arc<dyn Fft<f64>>,
-    inv1: Arc<dyn Fft<f64>>,
-    fwd2: Arc<dyn Fft<f64>>,
-    inv2: Arc<dyn Fft<f64>>,
+    row_fwd: Arc<dyn RealToComplex<f64>>,
+    row_inv: Arc<dyn ComplexToReal<f64>>,
+    col_fwd: Arc<dyn Fft<f64>>,
+    col_inv: Arc<dyn Fft<f64>>,
     kernel: Kernel,
+    /// Work space: one padded real row, one half-spectrum row, the column-major spectrum.
+    row: Vec<f64>,
+    half: Vec<Complex<f64>>,
+    cols: Vec<Complex<f64>>,
+    scratch: Vec<Complex<f64>>,
 }
 
 impl std::fmt::Debug for Deformation {
@@ -114,38 +125,46 @@ impl Deformation {
     pub fn new(grid: &Grid, kappa: f64, ell_k: f64) -> Self {
         let kernel = Kernel::new(grid, kappa, ell_k);
         let (n1, n2) = (2 * grid.nx, 2 * grid.ny);
+        let mut real_planner = RealFftPlanner::<f64>::new();
         let mut planner = FftPlanner::new();
+        let col_fwd = planner.plan_fft_forward(n2);
+        let col_inv = planner.plan_fft_inverse(n2);
+        let scratch_len = col_fwd
+            .get_inplace_scratch_len()
+            .max(col_inv.get_inplace_scratch_len());
+        let zero = Complex::new(0.0, 0.0);
         let mut d = Deformation {
             grid: *grid,
             n1,
             n2,
             spectrum: Vec::new(),
-            fwd1: planner.plan_fft_forward(n1),
-            inv1: planner.plan_fft_inverse(n1),
-            fwd2: planner.plan_fft_forward(n2),
-            inv2: planner.plan_fft_inverse(n2),
+            row_fwd: real_planner.plan_fft_forward(n1),
+            row_inv: real_planner.plan_fft_inverse(n1),
+            col_fwd,
+            col_inv,
             kernel,
+            row: vec![0.0; n1],
+            half: vec![zero; n1 / 2 + 1],
+            cols: vec![zero; (n1 / 2 + 1) * n2],
+            scratch: vec![zero; scratch_len],
         };
-        let mut buf = vec![Complex::new(0.0, 0.0); n1 * n2];
-        for l in 0..n2 {
-            let dl = if l <= grid.ny {
-                l as isize
+        // The periodic kernel: offset k at index k, offset -k at index n - k.
+        let wrap = |k: usize, n: usize, m: usize| {
+            if k <= m {
+                k as isize
             } else {
-                l as isize - n2 as isize
-            };
+                k as isize - n as isize
+            }
+        };
+        let mut image = vec![0.0; n1 * n2];
+        for l in 0..n2 {
             for k in 0..n1 {
-                let dk = if k <= grid.nx {
-                    k as isize
-                } else {
-                    k as isize - n1 as isize
-                };
-                buf[l * n1 + k] = Complex::new(d.kernel.at(dk, dl), 0.0);
+                image[l * n1 + k] = d.kernel.at(wrap(k, n1, grid.nx), wrap(l, n2, grid.ny));
             }
         }
-        d.transform(&mut buf, true);
+        d.forward(|l| Some(&image[l * n1..(l + 1) * n1]));
         let norm = 1.0 / (n1 * n2) as f64;
-        buf.iter_mut().for_each(|c| *c *= norm);
-        d.spectrum = buf;
+        d.spectrum = d.cols.iter().map(|c| c * norm).collect();
         d
     }
 
@@ -159,49 +178,67 @@ impl Deformation {
         &self.grid
     }
 
-    fn transform(&self, buf: &mut [Complex<f64>], forward: bool) {
-        let (n1, n2) = (self.n1, self.n2);
-        let (f1, f2) = if forward {
-            (&self.fwd1, &self.fwd2)
-        } else {
-            (&self.inv1, &self.inv2)
-        };
-        f1.process(buf);
-        // Columns: transpose into a scratch buffer, transform rows, transpose back.
-        let mut t = vec![Complex::new(0.0, 0.0); n1 * n2];
+    /// 2-D forward transform into `cols` of the padded rows `row(l)` (`None`: a zero row).
+    fn forward<'a>(&mut self, row: impl Fn(usize) -> Option<&'a [f64]>) {
+        let (n2, h) = (self.n2, self.n1 / 2 + 1);
+        self.cols
+            .iter_mut()
+            .for_each(|c| *c = Complex::new(0.0, 0.0));
         for l in 0..n2 {
-            for k in 0..n1 {
-                t[k * n2 + l] = buf[l * n1 + k];
+            let Some(r) = row(l) else { continue };
+            self.row.copy_from_slice(r);
+            // Lengths match by construction; an error here is a programming defect.
+            self.row_fwd
+                .process(&mut self.row, &mut self.half)
+                .expect("row FFT lengths");
+            for (kx, v) in self.half.iter().enumerate() {
+                self.cols[kx * n2 + l] = *v;
             }
         }
-        f2.process(&mut t);
-        for l in 0..n2 {
-            for k in 0..n1 {
-                buf[l * n1 + k] = t[k * n2 + l];
-            }
+        for kx in 0..h {
+            self.col_fwd
+                .process_with_scratch(&mut self.cols[kx * n2..(kx + 1) * n2], &mut self.scratch);
         }
     }
 
     /// `W = D * P` at every node of the grid (boundary values of `p` are ignored: they are
     /// zero by the boundary condition).
-    pub fn apply(&self, p: &[f64], w: &mut [f64]) {
-        let g = &self.grid;
-        let (n1, n2) = (self.n1, self.n2);
-        let mut buf = vec![Complex::new(0.0, 0.0); n1 * n2];
+    pub fn apply(&mut self, p: &[f64], w: &mut [f64]) {
+        let g = self.grid;
+        let (n2, h) = (self.n2, self.n1 / 2 + 1);
+        self.cols
+            .iter_mut()
+            .for_each(|c| *c = Complex::new(0.0, 0.0));
         for j in 1..g.ny {
-            for i in 1..g.nx {
-                buf[j * n1 + i] = Complex::new(p[g.idx(i, j)], 0.0);
+            self.row.iter_mut().for_each(|v| *v = 0.0);
+            self.row[1..g.nx].copy_from_slice(&p[g.idx(1, j)..g.idx(g.nx, j)]);
+            self.row_fwd
+                .process(&mut self.row, &mut self.half)
+                .expect("row FFT lengths");
+            for (kx, v) in self.half.iter().enumerate() {
+                self.cols[kx * n2 + j] = *v;
             }
         }
-        self.transform(&mut buf, true);
-        buf.iter_mut()
-            .zip(&self.spectrum)
-            .for_each(|(b, s)| *b *= s);
-        self.transform(&mut buf, false);
+        for kx in 0..h {
+            let col = &mut self.cols[kx * n2..(kx + 1) * n2];
+            self.col_fwd.process_with_scratch(col, &mut self.scratch);
+            col.iter_mut()
+                .zip(&self.spectrum[kx * n2..(kx + 1) * n2])
+                .for_each(|(c, s)| *c *= s);
+            self.col_inv.process_with_scratch(col, &mut self.scratch);
+        }
         for j in 0..g.py() {
-            for i in 0..g.px() {
-                w[g.idx(i, j)] = buf[j * n1 + i].re;
+            for kx in 0..h {
+                self.half[kx] = self.cols[kx * n2 + j];
             }
+            // The inverse real transform ignores the imaginary parts of the DC and Nyquist
+            // terms, which are round-off here.
+            self.half[0].im = 0.0;
+            self.half[h - 1].im = 0.0;
+            self.row_inv
+                .process(&mut self.half, &mut self.row)
+                .expect("row FFT lengths");
+            w[g.idx(0, j)..=g.idx(g.nx, j)].copy_from_slice(&self.row[..=g.nx]);
         }
     }
 }
@@ -255,7 +292,7 @@ mod tests {
                 }
             }
         }
-        let fast = Deformation::new(&g, kappa, ell_k);
+        let mut fast = Deformation::new(&g, kappa, ell_k);
         let mut w = g.zeros();
         fast.apply(&p0, &mut w);
         let slow = direct_sum(&g, fast.kernel(), &p0);
@@ -278,7 +315,7 @@ mod tests {
         };
         let g = Grid::level(&dom, level);
         let p = g.sample(Hertz::pressure);
-        let def = Deformation::new(&g, kappa, ell_k);
+        let mut def = Deformation::new(&g, kappa, ell_k);
         let mut w = g.zeros();
         def.apply(&p, &mut w);
         let (mut lo, mut hi) = (f64::MAX, f64::MIN);
