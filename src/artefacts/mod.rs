@@ -1,7 +1,11 @@
 //! The artefact pipeline: the paper's tables and figures as named targets, their case
 //! definitions (from `cases/`), and the files they write.
 
+pub mod cache;
 pub mod csv;
+pub mod fit;
+pub mod run;
+pub mod sweep;
 pub mod table4;
 
 /// A target of `repro list`.

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 
 /// The physics a case asks for; the solver composes only these.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(default, deny_unknown_fields)]
 pub struct Physics {
     /// Viscosity-pressure law.
     pub viscosity: ViscosityLaw,
