@@ -31,8 +31,59 @@ pub enum Command {
     Solve(Box<SolveArgs>),
     /// Table 4: grid convergence of the Appendix case at levels 5-8, beside the paper's values.
     Table4(Table4Args),
+    /// Table 1: lubricant properties.
+    Table1(TargetArgs),
+    /// Table 2: ranges of the operating parameters, with derived M, L, S-bar.
+    Table2(TargetArgs),
+    /// Table 3: the contact-configuration cases, with derived groups and tau_c.
+    Table3(TargetArgs),
+    /// Fig. 1: total mu-bar vs S-bar^(1/4) M L^3 (Barus, incompressible, circular).
+    Fig1(TargetArgs),
+    /// Fig. 2: total mu-bar vs tau_c, same sweep, Eq. (13) dashed.
+    Fig2(TargetArgs),
+    /// Fig. 3: sliding mu-bar vs tau_c, same sweep, Eq. (13) dashed.
+    Fig3(TargetArgs),
+    /// Fig. 4: sliding mu-bar vs tau_c, mineral oil A (Table 2 grid).
+    Fig4(TargetArgs),
+    /// Fig. 5: sliding mu-bar vs tau_c, traction fluid (Table 2 grid).
+    Fig5(TargetArgs),
+    /// Fig. 6: sliding mu-bar vs tau_c, 5P4E (Table 2 grid).
+    Fig6(TargetArgs),
+    /// Fig. 7: sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2 and 1/5 (Table 3).
+    Fig7(TargetArgs),
+    /// Every target, then figures/summary.csv (what `make figures` runs).
+    All(TargetArgs),
+    /// Run your own sweep file (the format of cases/*.toml) and put it on the mastercurve.
+    Run(RunArgs),
     /// List the targets.
     List,
+}
+
+#[derive(Debug, Args)]
+pub struct TargetArgs {
+    /// Grid level of the computed targets (default: the paper's working level 7).
+    #[arg(long)]
+    pub level: Option<u32>,
+    /// Output folder.
+    #[arg(long, default_value = "figures")]
+    pub out: PathBuf,
+    /// Result cache folder.
+    #[arg(long, default_value = ".repro-cache")]
+    pub cache: PathBuf,
+    /// Recompute every case, ignoring and not filling the cache.
+    #[arg(long = "no-cache")]
+    pub no_cache: bool,
+    /// No progress on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct RunArgs {
+    /// The sweep file (TOML, the format of cases/*.toml; see the README).
+    pub file: PathBuf,
+    #[command(flatten)]
+    pub target: TargetArgs,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]

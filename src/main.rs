@@ -12,8 +12,20 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Solve(args) => report::solve(&args),
         Command::Table4(args) => report::table4(&args),
+        Command::Table1(a) => report::target("table1", &a),
+        Command::Table2(a) => report::target("table2", &a),
+        Command::Table3(a) => report::target("table3", &a),
+        Command::Fig1(a) => report::target("fig1", &a),
+        Command::Fig2(a) => report::target("fig2", &a),
+        Command::Fig3(a) => report::target("fig3", &a),
+        Command::Fig4(a) => report::target("fig4", &a),
+        Command::Fig5(a) => report::target("fig5", &a),
+        Command::Fig6(a) => report::target("fig6", &a),
+        Command::Fig7(a) => report::target("fig7", &a),
+        Command::All(a) => report::all(&a),
+        Command::Run(a) => report::run_study(&a),
         Command::List => {
-            for t in repro::artefacts::TARGETS {
+            for t in repro::artefacts::targets::TARGETS {
                 println!("{:<8} {}", t.name, t.description);
             }
             Ok(true)

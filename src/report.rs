@@ -1,12 +1,16 @@
 //! What the commands print and write.
 
-use crate::cli::{SolveArgs, Table4Args};
-use anyhow::{Context, Result};
+use crate::cli::{RunArgs, SolveArgs, Table4Args, TargetArgs};
+use anyhow::{Context as _, Result};
+use repro::artefacts::cache::Cache;
+use repro::artefacts::run::RunProgress;
+use repro::artefacts::targets::{self, Built, Context};
 use repro::artefacts::{csv, table4};
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::point::{solve as solve_point, PointSolution, Progress};
 use serde_json::json;
+use std::io::IsTerminal;
 
 /// Prints one progress line per cycle to stderr.
 fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
@@ -169,4 +173,152 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
     print!("{}", table4::to_text(&rows));
     println!("wrote {}", path.display());
     Ok(rows.iter().all(|r| r.outcome.is_ok()))
+}
+
+/// A progress line per target on stderr: rewritten in place on a terminal, every tenth of the
+/// cases otherwise.
+fn run_progress(quiet: bool) -> impl Fn(&str, RunProgress) + Sync {
+    let tty = std::io::stderr().is_terminal();
+    move |name: &str, p: RunProgress| {
+        if quiet {
+            return;
+        }
+        let step = (p.total / 10).max(1);
+        if tty {
+            eprint!(
+                "\r  {name}: {}/{} cases ({} cached)   ",
+                p.done, p.total, p.cached
+            );
+            if p.done == p.total {
+                eprintln!();
+            }
+        } else if p.done.is_multiple_of(step) || p.done == p.total {
+            eprintln!(
+                "  {name}: {}/{} cases ({} cached)",
+                p.done, p.total, p.cached
+            );
+        }
+    }
+}
+
+fn summary_line(b: &Built) -> String {
+    let mut line = format!("{}: {} cases", b.name, b.cases);
+    if let (Some(s), Some(c)) = (b.solved, b.cached) {
+        line.push_str(&format!(", {s} solved, {c} cached"));
+    }
+    if let Some(l) = b.level {
+        line.push_str(&format!(", level {l}"));
+    }
+    line.push_str(&format!(", {:.1} s", b.seconds));
+    if let Some(f) = b.fit {
+        line.push_str(&format!(
+            ", fitted c = {:.2} (RMS deviation from Eq. 13 {:.1} %)",
+            f.c,
+            100.0 * f.rms_rel_dev
+        ));
+    }
+    line.push_str(&format!(" -> {}", b.files.join(", ")));
+    line
+}
+
+fn context<'a>(
+    args: &TargetArgs,
+    progress: &'a (dyn Fn(&str, RunProgress) + Sync),
+    warn: &'a (dyn Fn(String) + Sync),
+) -> Result<Context<'a>> {
+    if let Some(l) = args.level {
+        crate::cli::check_level("--level", l)?;
+    }
+    targets::check_writable(&args.out).map_err(|e| anyhow::anyhow!("--out: {e}"))?;
+    Ok(Context {
+        out: args.out.clone(),
+        cache: (!args.no_cache).then(|| Cache::new(&args.cache)),
+        level: args.level,
+        progress,
+        warn,
+    })
+}
+
+fn warner(quiet: bool) -> impl Fn(String) + Sync {
+    move |w: String| {
+        if !quiet {
+            eprintln!("warning: {w}");
+        }
+    }
+}
+
+/// `repro <target>`.
+pub fn target(name: &str, args: &TargetArgs) -> Result<bool> {
+    let progress = run_progress(args.quiet);
+    let warn = warner(args.quiet);
+    let ctx = context(args, &progress, &warn)?;
+    let built = targets::build(name, &ctx).map_err(anyhow::Error::msg)?;
+    println!("{}", summary_line(&built));
+    Ok(true)
+}
+
+/// `repro all`.
+pub fn all(args: &TargetArgs) -> Result<bool> {
+    let progress = run_progress(args.quiet);
+    let warn = warner(args.quiet);
+    let ctx = context(args, &progress, &warn)?;
+    let names: Vec<&str> = targets::TARGETS.iter().map(|t| t.name).collect();
+    let built = targets::build_all(&names, &ctx).map_err(anyhow::Error::msg)?;
+    for b in &built {
+        println!("{}", summary_line(b));
+    }
+    println!("wrote {}", args.out.join("summary.csv").display());
+    Ok(true)
+}
+
+/// `repro run my-study.toml`.
+pub fn run_study(args: &RunArgs) -> Result<bool> {
+    use repro::artefacts::fit::fit;
+    let sweep = repro::artefacts::sweep::Sweep::read(&args.file)?;
+    let progress = run_progress(args.target.quiet);
+    let warn = warner(args.target.quiet);
+    let ctx = context(&args.target, &progress, &warn)?;
+    let stem = args
+        .file
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "study".into());
+    let t = std::time::Instant::now();
+    let (runs, level) = targets::run_sweep(&stem, &sweep, &ctx)
+        .map_err(|e| anyhow::anyhow!("{}: {e}", args.file.display()))?;
+    let xy = |r: &repro::artefacts::run::CaseRun| {
+        r.record()
+            .map(|rec| (r.problem.tau_c(), rec.mu_bar_sliding))
+    };
+    let csv_text = targets::runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", xy);
+    let csv_path = args.target.out.join(format!("{stem}.csv"));
+    csv::write_atomic(&csv_path, &csv_text)
+        .with_context(|| format!("--out: cannot write {}", csv_path.display()))?;
+    let svg = repro::artefacts::figures::svg(&stem, &sweep.title, &runs, &xy, false, false)
+        .map_err(anyhow::Error::msg)?;
+    let svg_path = args.target.out.join(format!("{stem}.svg"));
+    if let Some(svg) = svg {
+        csv::write_atomic(&svg_path, &svg)
+            .with_context(|| format!("--out: cannot write {}", svg_path.display()))?;
+    }
+    let points: Vec<(f64, f64)> = runs.iter().filter_map(xy).collect();
+    let solved = points.len();
+    println!(
+        "{stem}: {} cases, {solved} solved, {} cached, level {level}, {:.1} s -> {}, {}",
+        runs.len(),
+        runs.iter().filter(|r| r.cached).count(),
+        t.elapsed().as_secs_f64(),
+        csv_path.display(),
+        svg_path.display()
+    );
+    if let Some(f) = fit(&points) {
+        println!(
+            "mastercurve: fitted c = {:.3} over {} points (paper: 5); deviation from Eq. (13): RMS {:.1} %, largest {:.1} %",
+            f.c,
+            f.points,
+            100.0 * f.rms_rel_dev,
+            100.0 * f.max_rel_dev
+        );
+    }
+    Ok(solved == runs.len())
 }

@@ -9,14 +9,21 @@ use std::path::{Path, PathBuf};
 
 /// Lower-case hex SHA-256 of `bytes`.
 pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }
 
 /// The key of anything serialisable: SHA-256 of its canonical JSON (struct fields in
 /// declaration order, floats in shortest round-trip form).
 pub fn key_of<T: Serialize>(value: &T) -> String {
     // Serialising plain data structs cannot fail.
-    sha256_hex(serde_json::to_string(value).expect("serialisable key").as_bytes())
+    sha256_hex(
+        serde_json::to_string(value)
+            .expect("serialisable key")
+            .as_bytes(),
+    )
 }
 
 #[derive(Serialize, Deserialize)]
@@ -68,7 +75,9 @@ impl Cache {
         };
         let entry: Entry = match serde_json::from_str(&text) {
             Ok(e) => e,
-            Err(e) => return Lookup::Corrupt(format!("{}: not a cache entry: {e}", path.display())),
+            Err(e) => {
+                return Lookup::Corrupt(format!("{}: not a cache entry: {e}", path.display()))
+            }
         };
         if entry.key != key || sha256_hex(entry.payload.as_bytes()) != entry.sha256 {
             return Lookup::Corrupt(format!("{}: hash mismatch", path.display()));
@@ -82,14 +91,20 @@ impl Cache {
     /// Writes the entry of `key` atomically.
     pub fn put<T: Serialize>(&self, key: &str, value: &T) -> std::io::Result<()> {
         let payload = serde_json::to_string(value).map_err(std::io::Error::other)?;
-        let entry = Entry { key: key.to_string(), sha256: sha256_hex(payload.as_bytes()), payload };
+        let entry = Entry {
+            key: key.to_string(),
+            sha256: sha256_hex(payload.as_bytes()),
+            payload,
+        };
         let text = serde_json::to_string(&entry).map_err(std::io::Error::other)?;
         let path = self.path(key);
         if let Some(dir) = path.parent() {
             std::fs::create_dir_all(dir)?;
         }
         // A per-thread temporary name: parallel writers of the same key never share one.
-        let tmp = path.with_extension(format!("tmp{:?}", std::thread::current().id()).replace(['(', ')'], ""));
+        let tmp = path.with_extension(
+            format!("tmp{:?}", std::thread::current().id()).replace(['(', ')'], ""),
+        );
         std::fs::write(&tmp, text)?;
         std::fs::rename(&tmp, &path)
     }
@@ -100,7 +115,8 @@ mod tests {
     use super::*;
 
     fn temp_dir(name: &str) -> PathBuf {
-        let d = std::env::temp_dir().join(format!("repro-cache-test-{name}-{}", std::process::id()));
+        let d =
+            std::env::temp_dir().join(format!("repro-cache-test-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&d);
         d
     }
@@ -117,7 +133,9 @@ mod tests {
         }
         // Flip one digit of the payload: the hash no longer matches.
         let path = cache.path(&key);
-        let text = std::fs::read_to_string(&path).unwrap().replace("1.5", "1.6");
+        let text = std::fs::read_to_string(&path)
+            .unwrap()
+            .replace("1.5", "1.6");
         std::fs::write(&path, text).unwrap();
         assert!(matches!(cache.get::<Vec<f64>>(&key), Lookup::Corrupt(_)));
         std::fs::write(&path, "{ truncated").unwrap();

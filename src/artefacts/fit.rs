@@ -25,7 +25,10 @@ pub struct Fit {
 }
 
 fn sum_sq(points: &[(f64, f64)], c: f64) -> f64 {
-    points.iter().map(|&(t, m)| (m - mastercurve(t, c)).powi(2)).sum()
+    points
+        .iter()
+        .map(|&(t, m)| (m - mastercurve(t, c)).powi(2))
+        .sum()
 }
 
 /// Fits `c` by golden-section search of the squared residuals over `ln c` in
@@ -33,7 +36,11 @@ fn sum_sq(points: &[(f64, f64)], c: f64) -> f64 {
 /// unimodal in `c`), and measures the deviations from Eq. (13). Points with
 /// `tau_c <= 0` or non-finite values are skipped. `None` for no usable point.
 pub fn fit(points: &[(f64, f64)]) -> Option<Fit> {
-    let pts: Vec<(f64, f64)> = points.iter().copied().filter(|&(t, m)| t > 0.0 && t.is_finite() && m.is_finite()).collect();
+    let pts: Vec<(f64, f64)> = points
+        .iter()
+        .copied()
+        .filter(|&(t, m)| t > 0.0 && t.is_finite() && m.is_finite())
+        .collect();
     if pts.is_empty() {
         return None;
     }
@@ -61,10 +68,18 @@ pub fn fit(points: &[(f64, f64)]) -> Option<Fit> {
         }
     }
     let c = (0.5 * (a + b)).exp();
-    let devs: Vec<f64> = pts.iter().map(|&(t, m)| m / mastercurve(t, PAPER_C) - 1.0).collect();
+    let devs: Vec<f64> = pts
+        .iter()
+        .map(|&(t, m)| m / mastercurve(t, PAPER_C) - 1.0)
+        .collect();
     let rms = (devs.iter().map(|d| d * d).sum::<f64>() / devs.len() as f64).sqrt();
     let max = devs.iter().fold(0.0f64, |acc, d| acc.max(d.abs()));
-    Some(Fit { points: pts.len(), c, rms_rel_dev: rms, max_rel_dev: max })
+    Some(Fit {
+        points: pts.len(),
+        c,
+        rms_rel_dev: rms,
+        max_rel_dev: max,
+    })
 }
 
 #[cfg(test)]
@@ -73,11 +88,18 @@ mod tests {
 
     #[test]
     fn recovers_the_constant_of_exact_points() {
-        let pts: Vec<(f64, f64)> = (0..30).map(|i| 10f64.powf(i as f64 / 3.0 - 2.0)).map(|t| (t, mastercurve(t, 4.2))).collect();
+        let pts: Vec<(f64, f64)> = (0..30)
+            .map(|i| 10f64.powf(i as f64 / 3.0 - 2.0))
+            .map(|t| (t, mastercurve(t, 4.2)))
+            .collect();
         let f = fit(&pts).unwrap();
         // Golden section to 1e-12 in ln c; exact data.
         assert!((f.c - 4.2).abs() < 1e-6, "{}", f.c);
-        let on = fit(&pts.iter().map(|&(t, _)| (t, mastercurve(t, 5.0))).collect::<Vec<_>>()).unwrap();
+        let on = fit(&pts
+            .iter()
+            .map(|&(t, _)| (t, mastercurve(t, 5.0)))
+            .collect::<Vec<_>>())
+        .unwrap();
         assert!(on.rms_rel_dev < 1e-12 && on.max_rel_dev < 1e-12);
         assert!(f.max_rel_dev > 0.01, "4.2 is visibly off Eq. (13)");
     }

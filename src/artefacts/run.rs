@@ -96,7 +96,13 @@ impl CaseRun {
 /// The cache key of a case at the given solver parameters.
 pub fn case_key(case: &Case, params: &Params) -> String {
     let d = &params.domain;
-    key_of(&(case, params.level, (d.x_start, d.x_end, d.y_half), params.rolling_friction, SOLVER_REVISION))
+    key_of(&(
+        case,
+        params.level,
+        (d.x_start, d.x_end, d.y_half),
+        params.rolling_friction,
+        SOLVER_REVISION,
+    ))
 }
 
 /// Progress of a run, reported after each case.
@@ -124,7 +130,9 @@ pub fn run_cases(
     let problems = cases
         .iter()
         .enumerate()
-        .map(|(i, c)| Problem::from_case(c, &lubricants).map_err(|e| format!("case {}: {e}", i + 1)))
+        .map(|(i, c)| {
+            Problem::from_case(c, &lubricants).map_err(|e| format!("case {}: {e}", i + 1))
+        })
         .collect::<Result<Vec<_>, _>>()?;
     let done = AtomicUsize::new(0);
     let cached_count = AtomicUsize::new(0);
@@ -143,20 +151,39 @@ pub fn run_cases(
                     }
                     let outcome = match solve(&problem, params, None) {
                         Ok(s) => Outcome::Solved(Record::of(&s)),
-                        Err(e) => Outcome::Failed { error: e.to_string(), residual_history: e.residual_history().to_vec() },
+                        Err(e) => Outcome::Failed {
+                            error: e.to_string(),
+                            residual_history: e.residual_history().to_vec(),
+                        },
                     };
                     if let Some(c) = cache {
                         if let Err(e) = c.put(&key, &outcome) {
-                            warn(format!("cannot write cache entry in {}: {e}", c.dir().display()));
+                            warn(format!(
+                                "cannot write cache entry in {}: {e}",
+                                c.dir().display()
+                            ));
                         }
                     }
                     (outcome, false)
                 }
             };
-            let cached_now = if cached { cached_count.fetch_add(1, Ordering::Relaxed) + 1 } else { cached_count.load(Ordering::Relaxed) };
+            let cached_now = if cached {
+                cached_count.fetch_add(1, Ordering::Relaxed) + 1
+            } else {
+                cached_count.load(Ordering::Relaxed)
+            };
             let d = done.fetch_add(1, Ordering::Relaxed) + 1;
-            progress(RunProgress { done: d, total, cached: cached_now });
-            CaseRun { case: case.clone(), problem, outcome, cached }
+            progress(RunProgress {
+                done: d,
+                total,
+                cached: cached_now,
+            });
+            CaseRun {
+                case: case.clone(),
+                problem,
+                outcome,
+                cached,
+            }
         })
         .collect();
     Ok(runs)

@@ -24,7 +24,7 @@
 //! e_prime_gpa = [226.0]
 //! ```
 
-use crate::physics::case::{Case, DimensionlessCase, LubricantSpec, Physics, PhysicalCase, Spec};
+use crate::physics::case::{Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec};
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -152,7 +152,11 @@ pub struct Sweep {
 }
 
 fn field(file: &str, field: &str, message: impl Into<String>) -> SweepError {
-    SweepError::Field { file: file.into(), field: field.into(), message: message.into() }
+    SweepError::Field {
+        file: file.into(),
+        field: field.into(),
+        message: message.into(),
+    }
 }
 
 /// Every combination of a grid, as points (the order of the keys in [`GridSpec`], the last
@@ -164,7 +168,12 @@ fn expand(grid: &GridSpec) -> Vec<PointSpec> {
             if let Some(values) = &grid.$name {
                 points = points
                     .into_iter()
-                    .flat_map(|p| values.iter().map(move |v| PointSpec { $name: Some(v.clone()), ..p.clone() }))
+                    .flat_map(|p| {
+                        values.iter().map(move |v| PointSpec {
+                            $name: Some(v.clone()),
+                            ..p.clone()
+                        })
+                    })
                     .collect();
             }
         };
@@ -192,7 +201,23 @@ fn with_defaults(p: &PointSpec, d: &PointSpec) -> PointSpec {
     macro_rules! pick {
         ($($name:ident),*) => { PointSpec { $($name: p.$name.clone().or_else(|| d.$name.clone()),)* } };
     }
-    pick!(lubricant, temperature_c, alpha_per_gpa, eta0_mpa_s, ph_gpa, um_m_s, slip, tau0_mpa, rx_m, d, e_prime_gpa, m, l, s_bar, tau0_hat)
+    pick!(
+        lubricant,
+        temperature_c,
+        alpha_per_gpa,
+        eta0_mpa_s,
+        ph_gpa,
+        um_m_s,
+        slip,
+        tau0_mpa,
+        rx_m,
+        d,
+        e_prime_gpa,
+        m,
+        l,
+        s_bar,
+        tau0_hat
+    )
 }
 
 impl PointSpec {
@@ -205,8 +230,20 @@ impl PointSpec {
             let slip = match (self.slip, self.tau0_hat) {
                 (Some(s), None) => s,
                 (None, Some(t)) => t * s_bar,
-                (None, None) => return Err(field(file, "slip", "give slip or tau0_hat for a dimensionless point")),
-                (Some(_), Some(_)) => return Err(field(file, "tau0_hat", "give either slip or tau0_hat, not both")),
+                (None, None) => {
+                    return Err(field(
+                        file,
+                        "slip",
+                        "give slip or tau0_hat for a dimensionless point",
+                    ))
+                }
+                (Some(_), Some(_)) => {
+                    return Err(field(
+                        file,
+                        "tau0_hat",
+                        "give either slip or tau0_hat, not both",
+                    ))
+                }
             };
             Spec::Dimensionless(DimensionlessCase {
                 m: need(self.m, "m")?,
@@ -219,15 +256,37 @@ impl PointSpec {
             })
         } else {
             let lubricant = match (&self.lubricant, self.alpha_per_gpa) {
-                (Some(name), None) => LubricantSpec::Named { lubricant: name.clone(), temperature_c: need(self.temperature_c, "temperature_c")? },
-                (None, Some(a)) => LubricantSpec::Given { alpha_per_pa: a * 1e-9, eta0_pa_s: need(self.eta0_mpa_s, "eta0_mpa_s")? * 1e-3 },
-                (Some(_), Some(_)) => return Err(field(file, "alpha_per_gpa", "give a lubricant name or alpha_per_gpa/eta0_mpa_s, not both")),
-                (None, None) => return Err(field(file, "lubricant", "missing (or give alpha_per_gpa and eta0_mpa_s)")),
+                (Some(name), None) => LubricantSpec::Named {
+                    lubricant: name.clone(),
+                    temperature_c: need(self.temperature_c, "temperature_c")?,
+                },
+                (None, Some(a)) => LubricantSpec::Given {
+                    alpha_per_pa: a * 1e-9,
+                    eta0_pa_s: need(self.eta0_mpa_s, "eta0_mpa_s")? * 1e-3,
+                },
+                (Some(_), Some(_)) => {
+                    return Err(field(
+                        file,
+                        "alpha_per_gpa",
+                        "give a lubricant name or alpha_per_gpa/eta0_mpa_s, not both",
+                    ))
+                }
+                (None, None) => {
+                    return Err(field(
+                        file,
+                        "lubricant",
+                        "missing (or give alpha_per_gpa and eta0_mpa_s)",
+                    ))
+                }
             };
             let rx = need(self.rx_m, "rx_m")?;
             let d = self.d.unwrap_or(1.0);
             if !(d > 0.0 && d <= 1.0) {
-                return Err(field(file, "d", format!("Rx/Ry must lie in (0, 1], got {d}")));
+                return Err(field(
+                    file,
+                    "d",
+                    format!("Rx/Ry must lie in (0, 1], got {d}"),
+                ));
             }
             Spec::Physical(PhysicalCase {
                 lubricant,
@@ -247,22 +306,41 @@ impl PointSpec {
 impl Sweep {
     /// Parses sweep text; `file` names it in errors.
     pub fn parse(file: &str, text: &str) -> Result<Self, SweepError> {
-        let raw: SweepFile = toml::from_str(text).map_err(|e| SweepError::Parse { file: file.into(), message: e.to_string() })?;
+        let raw: SweepFile = toml::from_str(text).map_err(|e| SweepError::Parse {
+            file: file.into(),
+            message: e.to_string(),
+        })?;
         let defaults = raw.defaults.clone().unwrap_or_default();
         let mut points: Vec<PointSpec> = raw.grid.as_ref().map(expand).unwrap_or_default();
-        points.iter_mut().for_each(|p| *p = with_defaults(p, &defaults));
+        points
+            .iter_mut()
+            .for_each(|p| *p = with_defaults(p, &defaults));
         points.extend(raw.point.iter().map(|p| with_defaults(p, &defaults)));
         if points.is_empty() {
-            return Err(field(file, "grid", "the sweep has no [grid] and no [[point]]"));
+            return Err(field(
+                file,
+                "grid",
+                "the sweep has no [grid] and no [[point]]",
+            ));
         }
-        let cases = points.iter().map(|p| p.to_case(file, raw.physics)).collect::<Result<Vec<_>, _>>()?;
-        Ok(Sweep { title: raw.title, level: raw.level, cases })
+        let cases = points
+            .iter()
+            .map(|p| p.to_case(file, raw.physics))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Sweep {
+            title: raw.title,
+            level: raw.level,
+            cases,
+        })
     }
 
     /// Reads and parses a sweep file.
     pub fn read(path: &Path) -> Result<Self, SweepError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SweepError::Io { file: file.clone(), message: e.to_string() })?;
+        let text = std::fs::read_to_string(path).map_err(|e| SweepError::Io {
+            file: file.clone(),
+            message: e.to_string(),
+        })?;
         Self::parse(&file, &text)
     }
 }
@@ -280,7 +358,13 @@ pub fn shipped() -> BTreeMap<&'static str, &'static str> {
 
 /// A shipped sweep by name.
 pub fn shipped_sweep(name: &str) -> Result<Sweep, SweepError> {
-    let text = shipped().get(name).copied().ok_or_else(|| field(&format!("cases/{name}.toml"), "name", "no such shipped sweep"))?;
+    let text = shipped().get(name).copied().ok_or_else(|| {
+        field(
+            &format!("cases/{name}.toml"),
+            "name",
+            "no such shipped sweep",
+        )
+    })?;
     Sweep::parse(&format!("cases/{name}.toml"), text)
 }
 
@@ -293,7 +377,13 @@ mod tests {
     #[test]
     fn shipped_sweeps_parse_and_are_physical() {
         let lubs = LubricantTable::table1();
-        for (name, expect) in [("fig1-3", 125), ("fig4", 243), ("fig5", 243), ("fig6", 243), ("fig7", 10)] {
+        for (name, expect) in [
+            ("fig1-3", 125),
+            ("fig4", 243),
+            ("fig5", 243),
+            ("fig6", 243),
+            ("fig7", 10),
+        ] {
             let s = shipped_sweep(name).unwrap();
             assert_eq!(s.cases.len(), expect, "{name}");
             for c in &s.cases {
@@ -317,7 +407,10 @@ mod tests {
                 _ => unreachable!(),
             })
             .collect();
-        assert_eq!(ml, vec![(100.0, 5.0), (100.0, 10.0), (200.0, 5.0), (200.0, 10.0)]);
+        assert_eq!(
+            ml,
+            vec![(100.0, 5.0), (100.0, 10.0), (200.0, 5.0), (200.0, 10.0)]
+        );
         if let Spec::Dimensionless(d) = &s.cases[0].spec {
             assert!((d.slip - 0.2).abs() < 1e-15, "S = tau0_hat S-bar");
         }
@@ -325,13 +418,27 @@ mod tests {
 
     #[test]
     fn errors_name_the_file_and_field() {
-        let e = Sweep::parse("my.toml", "title = 'x'\n[grid]\nph_gpa = [1.0]\n").unwrap_err().to_string();
+        let e = Sweep::parse("my.toml", "title = 'x'\n[grid]\nph_gpa = [1.0]\n")
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("my.toml: lubricant"), "{e}");
-        let e = Sweep::parse("my.toml", "title = 'x'\n[grid]\nph_gpa = [1.0]\nbogus = [1]\n").unwrap_err().to_string();
+        let e = Sweep::parse(
+            "my.toml",
+            "title = 'x'\n[grid]\nph_gpa = [1.0]\nbogus = [1]\n",
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.starts_with("my.toml") && e.contains("bogus"), "{e}");
-        let e = Sweep::parse("my.toml", "title = 'x'\n[[point]]\nm = 10.0\nl = 2.0\ns_bar = 0.1\n").unwrap_err().to_string();
+        let e = Sweep::parse(
+            "my.toml",
+            "title = 'x'\n[[point]]\nm = 10.0\nl = 2.0\ns_bar = 0.1\n",
+        )
+        .unwrap_err()
+        .to_string();
         assert!(e.contains("slip"), "{e}");
-        let e = Sweep::parse("my.toml", "title = 'x'\n").unwrap_err().to_string();
+        let e = Sweep::parse("my.toml", "title = 'x'\n")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("no [grid]"), "{e}");
     }
 }

@@ -4,5 +4,6 @@
 pub mod banded;
 pub mod deformation;
 pub mod grid;
+pub mod line;
 pub mod output;
 pub mod point;

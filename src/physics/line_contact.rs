@@ -1,0 +1,655 @@
+//! The line contact (Fig. 7, "using a separate approach based on the equations presented in
+//! Ref. [11]", Conry, Wang and Cusano 1987): Hertz scales of a cylinder on a plane, the Moes
+//! line-contact groups, the exact one-dimensional Eyring flow, line-contact film formulas and
+//! the dimensionless problem the 1-D solver consumes. The line-contact groups are computed
+//! here and nowhere else.
+//!
+//! Units. `w'` is the load per unit length (N/m), `E'` the reduced modulus of the paper's
+//! Nomenclature (`2/E' = (1 - nu1^2)/E1 + (1 - nu2^2)/E2`), `u_s = u1 + u2 = 2 u_m` the sum
+//! velocity as everywhere in the paper. Dimensionless variables: `X = x/a`, `P = p/p_H`,
+//! `H = h Rx / a^2` (the 1-D analogue of the paper's `H = h/c`), so that the film equation is
+//! `H = H0 + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
+
+use super::case::{CaseError, Physics};
+use super::density::{Density, DensityLaw};
+use super::rheology::Rheology;
+use super::viscosity::{Viscosity, ViscosityLaw};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// Hertzian scales of a line contact, SI units (or units of `Rx`, `E'` for a dimensionless
+/// case).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LineHertz {
+    /// Reduced radius of curvature in the rolling direction, m.
+    pub rx: f64,
+    /// Reduced modulus `E'`, Pa.
+    pub e_prime: f64,
+    /// Maximum Hertzian pressure, Pa.
+    pub ph: f64,
+    /// Hertzian half-width `a`, m.
+    pub a: f64,
+    /// Load per unit length `w'`, N/m.
+    pub load_per_length: f64,
+}
+
+impl LineHertz {
+    /// From the maximum Hertzian pressure: `a = 4 Rx p_H / E'` and `w' = pi a p_H / 2`.
+    pub fn from_ph(ph: f64, rx: f64, e_prime: f64) -> Self {
+        let a = 4.0 * rx * ph / e_prime;
+        LineHertz {
+            rx,
+            e_prime,
+            ph,
+            a,
+            load_per_length: PI * a * ph / 2.0,
+        }
+    }
+
+    /// From the load per unit length: `p_H = sqrt(w' E' / (2 pi Rx))`.
+    pub fn from_load(load_per_length: f64, rx: f64, e_prime: f64) -> Self {
+        Self::from_ph(
+            (load_per_length * e_prime / (2.0 * PI * rx)).sqrt(),
+            rx,
+            e_prime,
+        )
+    }
+
+    /// The unit of the dimensionless film `H = h / (a^2 / Rx)`, m.
+    pub fn film_unit(&self) -> f64 {
+        self.a * self.a / self.rx
+    }
+
+    /// The dry Hertzian pressure `P = sqrt(1 - X^2)` inside the contact.
+    pub fn pressure(x: f64) -> f64 {
+        if x.abs() < 1.0 {
+            (1.0 - x * x).sqrt()
+        } else {
+            0.0
+        }
+    }
+}
+
+/// The dimensionless groups of a line contact.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LineGroups {
+    /// Moes load parameter `M = W' U^{-1/2}`, `W' = w' / (E' Rx)`, `U = eta0 u_s / (E' Rx)`.
+    pub m: f64,
+    /// Moes lubricant parameter `L = alpha E' U^{1/4}`.
+    pub l: f64,
+    /// Dimensionless slip, Eq. (9): `S-bar = S (u_s eta0 E' / (tau0^2 Rx))^{1/2}`.
+    pub s_bar: f64,
+    /// `alpha-bar = alpha p_H` (`= L sqrt(M / (2 pi))`).
+    pub alpha_bar: f64,
+    /// Speed parameter `lambda = 6 eta0 u_s Rx^2 / (a^3 p_H)` (`= 3 pi^2 / (8 M^2)`).
+    pub lambda: f64,
+    /// Eyring parameter `N = eta0 u_s Rx / (2 a^2 tau0)`: the Newtonian Couette stress over
+    /// `tau0` is `N S eta_bar / H`.
+    pub n: f64,
+    /// Slide-to-roll ratio `S`.
+    pub slip: f64,
+    /// `(a/Rx)^2 U^{-1/2}` (`= 8 M / pi`): converts `H = h Rx / a^2` to Moes units
+    /// `(h/Rx) U^{-1/2}`.
+    pub moes_film_scale: f64,
+    /// `a p_H / (2 Rx tau0)` (`= 6 N / lambda`): the Poiseuille stress on the surface over
+    /// `tau0`, `G = (h/2)(dp/dx)/tau0`, is this times `H dP/dX`. Zero for `tau0 = inf`.
+    pub poiseuille_stress_scale: f64,
+}
+
+impl LineGroups {
+    /// Every group from the Hertz scales, `eta0 u_s` (Pa m), `alpha` (1/Pa), `1/tau0` (1/Pa,
+    /// zero for an infinite Eyring stress) and `S`.
+    pub fn new(hz: &LineHertz, eta0_us: f64, alpha: f64, tau0_inv: f64, slip: f64) -> Self {
+        let u = eta0_us / (hz.e_prime * hz.rx);
+        let w = hz.load_per_length / (hz.e_prime * hz.rx);
+        let a_rx = hz.a / hz.rx;
+        LineGroups {
+            m: w / u.sqrt(),
+            l: alpha * hz.e_prime * u.powf(0.25),
+            s_bar: slip * (eta0_us * hz.e_prime / hz.rx).sqrt() * tau0_inv,
+            alpha_bar: alpha * hz.ph,
+            lambda: 6.0 * eta0_us * hz.rx * hz.rx / (hz.a.powi(3) * hz.ph),
+            n: eta0_us * hz.rx / (2.0 * hz.a * hz.a) * tau0_inv,
+            slip,
+            moes_film_scale: a_rx * a_rx / u.sqrt(),
+            poiseuille_stress_scale: hz.a * hz.ph / (2.0 * hz.rx) * tau0_inv,
+        }
+    }
+}
+
+/// Published central film-thickness formulas of the line contact, in Moes units
+/// `Hc = (h_c / Rx) U^{-1/2}`, `U = eta0 u_s / (E' Rx)`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum LineFilmFormula {
+    /// Moes' line-contact formula (Moes 1992, "Optimum similarity analysis with applications
+    /// to elastohydrodynamic lubrication", Wear 159; as quoted by Venner and Lubrecht,
+    /// "Multilevel Methods in Lubrication", 2000), a fit of full numerical Newtonian, Barus,
+    /// incompressible solutions between its four asymptotes:
+    /// `H_RI = 3 M^{-1}`, `H_EI = 2.621 M^{-1/5}`, `H_RP = 1.287 L^{2/3}`,
+    /// `H_EP = 1.311 M^{-1/8} L^{3/4}`, `s = (7 + 8 exp(-2 H_EI / H_RI)) / 5`,
+    /// `Hc = [(H_RI^{7/3} + H_EI^{7/3})^{3s/7} + (H_RP^{-7/2} + H_EP^{-7/2})^{-2s/7}]^{1/s}`.
+    /// The constants were checked against a public implementation of the same formula
+    /// (GitHub `Konglingyu1997/Mixed-lubrication-Helical-gear`, README.md, whose load-sharing
+    /// factor `gamma = 1` gives the smooth full-film case). This is the formula that defines
+    /// `tau_c` for the line contact here: like Eq. (10) for the circular contact it is a fit to
+    /// numerical solutions in the Moes groups, and its `H_EP` asymptote has the same `L^{3/4}`.
+    #[default]
+    Moes,
+    /// Dowson and Toyoda (1979) central film, `h_c/Rx = 3.06 U_m^{0.69} G^{0.56} W'^{-0.10}` with
+    /// `U_m = eta0 u_m / (E' Rx)` (mean velocity), `G = alpha E'`; exactly Moes-similar:
+    /// `Hc = 3.06 2^{-0.69} L^{0.56} M^{-0.10}`.
+    DowsonToyoda,
+    /// Dowson and Higginson (1966) minimum film, `h_min/Rx = 2.65 U_m^{0.70} G^{0.54} W'^{-0.13}`
+    /// (the formula Sec. IV of the paper uses for the line-contact measurements), taken as the
+    /// film of `tau_c`: `Hc = 2.65 2^{-0.70} L^{0.54} M^{-0.13}`.
+    DowsonHigginson,
+}
+
+impl LineFilmFormula {
+    /// All formulas, for comparisons.
+    pub const ALL: [LineFilmFormula; 3] = [
+        LineFilmFormula::Moes,
+        LineFilmFormula::DowsonToyoda,
+        LineFilmFormula::DowsonHigginson,
+    ];
+
+    /// Central film thickness in Moes units at `(M, L)`.
+    pub fn hc(self, m: f64, l: f64) -> f64 {
+        match self {
+            LineFilmFormula::Moes => {
+                let h_ri = 3.0 / m;
+                let h_ei = 2.621 * m.powf(-0.2);
+                let h_rp = 1.287 * l.powf(2.0 / 3.0);
+                let h_ep = 1.311 * m.powf(-0.125) * l.powf(0.75);
+                let s = (7.0 + 8.0 * (-2.0 * h_ei / h_ri).exp()) / 5.0;
+                let rigid = (h_ri.powf(7.0 / 3.0) + h_ei.powf(7.0 / 3.0)).powf(3.0 * s / 7.0);
+                let piezo = (h_rp.powf(-3.5) + h_ep.powf(-3.5)).powf(-2.0 * s / 7.0);
+                (rigid + piezo).powf(1.0 / s)
+            }
+            LineFilmFormula::DowsonToyoda => 3.06 * 2f64.powf(-0.69) * l.powf(0.56) * m.powf(-0.10),
+            LineFilmFormula::DowsonHigginson => {
+                2.65 * 2f64.powf(-0.70) * l.powf(0.54) * m.powf(-0.13)
+            }
+        }
+    }
+
+    /// A short name for tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            LineFilmFormula::Moes => "Moes",
+            LineFilmFormula::DowsonToyoda => "Dowson-Toyoda",
+            LineFilmFormula::DowsonHigginson => "Dowson-Higginson (h_min)",
+        }
+    }
+}
+
+/// Which Eyring flow the line contact uses (only read when the rheology is Eyring).
+///
+/// Across the film the shear stress is `tau(z) = tau_m + z dp/dx`, `-h/2 <= z <= h/2`, and the
+/// Eyring fluid shears at `gamma_dot = (tau0/eta) sinh(tau/tau0)`. Integrating once and twice
+/// across the film (Conry, Wang and Cusano 1987) gives, with `G = h (dp/dx) / (2 tau0)` and the
+/// sliding speed `du = u2 - u1 = S u_m`:
+///
+/// - the mean stress: `sinh(tau_m/tau0) = (eta du / (h tau0)) G / sinh(G)`;
+/// - the flow `q = u_m h - (h^3 / (12 eta)) cosh(tau_m/tau0) F(G) dp/dx`,
+///   `F(G) = 3 (G cosh G - sinh G) / G^3`, i.e. Poiseuille flow with the effective viscosity
+///   `eta / (cosh(tau_m/tau0) F(G))`.
+///
+/// Dropping `G` (`G / sinh G -> 1`, `F -> 1`) gives the perturbation form of Eqs. (2) and (4),
+/// which is what the point contact uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum LineEyringFlow {
+    /// The closed form above (SPEC.md section 2): the default for the line contact.
+    #[default]
+    Exact,
+    /// Eqs. (2) and (4): `tau_m = asinh(eta du / (h tau0))`, `eta_x = eta / cosh(tau_m)`.
+    Perturbation,
+}
+
+/// Largest `|G|` used in the flow factors: `cosh` overflows near 710; beyond 300 the Eyring
+/// Poiseuille flux is saturated (`q -> u_m h -+ h du/2`) for any finite Couette stress.
+const G_MAX: f64 = 300.0;
+
+/// `F(G) = 3 (G cosh G - sinh G) / G^3`, even, `F(0) = 1`. Below `|G| = 0.1`, where the
+/// difference loses `3e-16 / G^2` relative, the series `1 + G^2/10 + G^4/280 + G^6/15120`
+/// (truncation `7.5e-7 G^8`) is used.
+pub fn eyring_f(g: f64) -> f64 {
+    let g = g.abs().min(G_MAX);
+    if g < 0.1 {
+        let g2 = g * g;
+        1.0 + g2 * (1.0 / 10.0 + g2 * (1.0 / 280.0 + g2 / 15120.0))
+    } else {
+        3.0 * (g * g.cosh() - g.sinh()) / (g * g * g)
+    }
+}
+
+/// `G / sinh(G)`, even, 1 at 0.
+pub fn g_over_sinh(g: f64) -> f64 {
+    let g = g.abs().min(G_MAX);
+    if g < 1e-3 {
+        let g2 = g * g;
+        1.0 - g2 / 6.0 + 7.0 * g2 * g2 / 360.0
+    } else {
+        g / g.sinh()
+    }
+}
+
+/// `F(G) G / sinh(G) = 3 (G coth G - 1) / G^2`, even, 1 at 0, `-> 3/|G|` for large `|G|`.
+/// Below `|G| = 0.1` the series `1 - G^2/15 + 2 G^4/315 - G^6/1575` (truncation
+/// `6.4e-5 G^8`) replaces the cancelling difference.
+fn f_g_over_sinh(g: f64) -> f64 {
+    let g = g.abs().min(G_MAX);
+    if g < 0.1 {
+        let g2 = g * g;
+        1.0 - g2 * (1.0 / 15.0 - g2 * (2.0 / 315.0 - g2 / 1575.0))
+    } else {
+        3.0 * (g / g.tanh() - 1.0) / (g * g)
+    }
+}
+
+impl LineEyringFlow {
+    /// Dimensionless mean shear stress `tau_m / tau0` for the Couette argument
+    /// `x = eta du / (h tau0)` and `G`: `asinh(x G / sinh G)` (exact), `asinh(x)`
+    /// (perturbation), `x` (Newtonian, where Couette and Poiseuille superpose exactly).
+    pub fn mean_shear_stress(self, rheology: Rheology, x: f64, g: f64) -> f64 {
+        match (rheology, self) {
+            (Rheology::Newtonian, _) => x,
+            (Rheology::Eyring, LineEyringFlow::Exact) => (x * g_over_sinh(g)).asinh(),
+            (Rheology::Eyring, LineEyringFlow::Perturbation) => x.asinh(),
+        }
+    }
+
+    /// Poiseuille conductance `H^3 / eta_eff` for film `h`, viscosity `eta`, `n_s = N S` and
+    /// `G`, written without overflow however large `eta` is:
+    /// exact `H^2 hypot(F H / eta, N S F G / sinh G)`; perturbation `H^2 hypot(H / eta, N S)`;
+    /// Newtonian `H^3 / eta`. Zero where `h <= 0`.
+    pub fn conductance(self, rheology: Rheology, h: f64, eta: f64, n_s: f64, g: f64) -> f64 {
+        if h <= 0.0 {
+            return 0.0;
+        }
+        match (rheology, self) {
+            (Rheology::Newtonian, _) => h * h * h / eta,
+            (Rheology::Eyring, LineEyringFlow::Exact) => {
+                h * h * (eyring_f(g) * h / eta).hypot(n_s * f_g_over_sinh(g))
+            }
+            (Rheology::Eyring, LineEyringFlow::Perturbation) => h * h * (h / eta).hypot(n_s),
+        }
+    }
+}
+
+/// A line contact given by its physical operating conditions (SI units).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LinePhysicalCase {
+    /// Pressure-viscosity coefficient at the case's temperature, 1/Pa.
+    pub alpha_per_pa: f64,
+    /// Ambient viscosity at the case's temperature, Pa s.
+    pub eta0_pa_s: f64,
+    /// Maximum Hertzian pressure, Pa (the load is given through it).
+    pub ph_pa: f64,
+    /// Mean velocity `u_m = (u1 + u2)/2`, m/s.
+    pub um_m_s: f64,
+    /// Slide-to-roll ratio `S = 2 (u2 - u1) / (u2 + u1)`.
+    pub slip: f64,
+    /// Eyring stress, Pa.
+    pub tau0_pa: f64,
+    /// Reduced radius in the rolling direction, m.
+    pub rx_m: f64,
+    /// Reduced modulus `E'`, Pa.
+    pub e_prime_pa: f64,
+}
+
+/// A line contact given by its Moes groups.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LineDimensionlessCase {
+    /// Moes line-contact load parameter `M`.
+    pub m: f64,
+    /// Moes lubricant parameter `L`.
+    pub l: f64,
+    /// Dimensionless slip, Eq. (9).
+    pub s_bar: f64,
+    /// Slide-to-roll ratio: with `S-bar` it fixes `tau0` (the scale of the rolling friction).
+    pub slip: f64,
+    /// Ambient viscosity, Pa s: needed only by Roelands.
+    pub eta0_pa_s: Option<f64>,
+    /// Maximum Hertzian pressure, Pa: needed only by Roelands and Dowson-Higginson.
+    pub ph_pa: Option<f64>,
+}
+
+/// The dimensionless line-contact problem: what the 1-D solver consumes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LineProblem {
+    /// Dimensionless groups.
+    pub groups: LineGroups,
+    /// Viscosity law.
+    pub viscosity: Viscosity,
+    /// Density law.
+    pub density: Density,
+    /// Rheology.
+    pub rheology: Rheology,
+    /// Which Eyring flow (exact by default).
+    pub eyring_flow: LineEyringFlow,
+    /// Hertz scales (physical for a physical case; units `Rx = E' = 1`, `U = 1` for a
+    /// dimensionless one).
+    pub hertz: LineHertz,
+}
+
+fn field(field: &'static str, message: impl Into<String>) -> CaseError {
+    CaseError::Field {
+        field,
+        message: message.into(),
+    }
+}
+
+fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
+    if v > 0.0 && v.is_finite() {
+        Ok(v)
+    } else {
+        Err(field(name, format!("must be positive and finite, got {v}")))
+    }
+}
+
+fn slip_in_range(s: f64) -> Result<f64, CaseError> {
+    if (0.0..=2.0).contains(&s) {
+        Ok(s)
+    } else {
+        Err(field(
+            "slip",
+            format!("slide-to-roll ratio must lie in [0, 2], got {s}"),
+        ))
+    }
+}
+
+impl LineProblem {
+    /// From physical operating conditions; every field is checked and named on error.
+    pub fn from_physical(c: &LinePhysicalCase, physics: Physics) -> Result<Self, CaseError> {
+        let alpha = positive("alpha", c.alpha_per_pa)?;
+        let eta0 = positive("eta0", c.eta0_pa_s)?;
+        let ph = positive("ph", c.ph_pa)?;
+        let um = positive("um", c.um_m_s)?;
+        let slip = slip_in_range(c.slip)?;
+        let tau0 = positive("tau0", c.tau0_pa)?;
+        let rx = positive("rx", c.rx_m)?;
+        let e_prime = positive("e-prime", c.e_prime_pa)?;
+        if ph >= e_prime {
+            return Err(field(
+                "ph",
+                format!("p_H = {ph} Pa must be far below E' = {e_prime} Pa (small strains)"),
+            ));
+        }
+        let hertz = LineHertz::from_ph(ph, rx, e_prime);
+        let groups = LineGroups::new(&hertz, eta0 * 2.0 * um, alpha, 1.0 / tau0, slip);
+        Ok(Self::assemble(groups, hertz, physics, eta0, alpha, ph))
+    }
+
+    /// From the Moes groups. In units `Rx = E' = 1` and `U = eta0 u_s / (E' Rx) = 1` the load
+    /// per unit length is `M`, `alpha` is `L` and `1/tau0 = S-bar / S`.
+    pub fn from_dimensionless(
+        c: &LineDimensionlessCase,
+        physics: Physics,
+    ) -> Result<Self, CaseError> {
+        let m = positive("m", c.m)?;
+        let l = positive("l", c.l)?;
+        if !(c.s_bar >= 0.0 && c.s_bar.is_finite()) {
+            return Err(field("s-bar", format!("must be >= 0, got {}", c.s_bar)));
+        }
+        let slip = slip_in_range(c.slip)?;
+        if c.s_bar > 0.0 && slip == 0.0 {
+            return Err(field("slip", "S-bar > 0 needs a slide-to-roll ratio S > 0"));
+        }
+        let hertz = LineHertz::from_load(m, 1.0, 1.0);
+        let tau0_inv = if c.s_bar > 0.0 { c.s_bar / slip } else { 0.0 };
+        let groups = LineGroups::new(&hertz, 1.0, l, tau0_inv, slip);
+        let needs_ph = physics.viscosity == ViscosityLaw::Roelands
+            || physics.density == DensityLaw::DowsonHigginson;
+        let ph_pa = match c.ph_pa {
+            Some(v) => positive("ph", v)?,
+            None if needs_ph => {
+                return Err(field(
+                    "ph",
+                    "Roelands and Dowson-Higginson need the physical p_H (Pa) in the dimensionless form",
+                ))
+            }
+            None => f64::NAN,
+        };
+        let eta0 = match c.eta0_pa_s {
+            Some(v) => positive("eta0", v)?,
+            None if physics.viscosity == ViscosityLaw::Roelands => {
+                return Err(field(
+                    "eta0",
+                    "Roelands needs the ambient viscosity (Pa s) in the dimensionless form",
+                ))
+            }
+            None => f64::NAN,
+        };
+        let mut problem = Self::assemble(
+            groups,
+            hertz,
+            physics,
+            eta0,
+            groups.alpha_bar / ph_pa,
+            ph_pa,
+        );
+        if physics.viscosity == ViscosityLaw::Barus {
+            problem.viscosity = Viscosity::barus(groups.alpha_bar);
+        }
+        Ok(problem)
+    }
+
+    fn assemble(
+        groups: LineGroups,
+        hertz: LineHertz,
+        physics: Physics,
+        eta0: f64,
+        alpha: f64,
+        ph: f64,
+    ) -> Self {
+        LineProblem {
+            groups,
+            viscosity: Viscosity::new(physics.viscosity, eta0, alpha, ph),
+            density: Density::new(physics.density, ph),
+            rheology: physics.rheology,
+            eyring_flow: LineEyringFlow::default(),
+            hertz,
+        }
+    }
+
+    /// The same problem with another Eyring flow.
+    pub fn with_eyring_flow(mut self, flow: LineEyringFlow) -> Self {
+        self.eyring_flow = flow;
+        self
+    }
+
+    /// The physics this problem composes.
+    pub fn physics(&self) -> Physics {
+        Physics {
+            viscosity: self.viscosity.law(),
+            density: self.density.law(),
+            rheology: self.rheology,
+        }
+    }
+
+    /// `N S`: the Couette stress argument is `N S eta_bar / H`.
+    pub fn eyring_n_s(&self) -> f64 {
+        self.groups.n * self.groups.slip
+    }
+
+    /// Characteristic shear stress, Eq. (12), of the line contact: `tau_c = eta_bar(p_H)
+    /// S-bar / Hc` with `Hc` from Moes' line-contact formula ([`LineFilmFormula::Moes`]).
+    pub fn tau_c(&self) -> f64 {
+        self.tau_c_with(LineFilmFormula::Moes)
+    }
+
+    /// `tau_c` with the central film of another formula.
+    pub fn tau_c_with(&self, formula: LineFilmFormula) -> f64 {
+        self.viscosity.eta_bar(1.0) * self.groups.s_bar / formula.hc(self.groups.m, self.groups.l)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    pub(crate) fn heavy_case() -> LinePhysicalCase {
+        // Mineral oil A at 40 C (Table 1), the fifth case of Table 3.
+        LinePhysicalCase {
+            alpha_per_pa: 21.6e-9,
+            eta0_pa_s: 8.24e-3,
+            ph_pa: 3e9,
+            um_m_s: 7.0,
+            slip: 0.001,
+            tau0_pa: 8e6,
+            rx_m: 1.03875e-2,
+            e_prime_pa: 226e9,
+        }
+    }
+
+    #[test]
+    fn hertz_scales_are_consistent() {
+        let h = LineHertz::from_ph(3e9, 1.03875e-2, 226e9);
+        // w' = pi a p_H / 2 returns p_H through p_H = sqrt(w' E' / (2 pi Rx)) (round-off).
+        let back = LineHertz::from_load(h.load_per_length, 1.03875e-2, 226e9);
+        assert!((back.ph / 3e9 - 1.0).abs() < 1e-14);
+        assert!((back.a / h.a - 1.0).abs() < 1e-14);
+        // a = 4 Rx p_H / E' (hand value 0.551549 mm, 6 digits).
+        assert!((h.a - 5.51549e-4).abs() < 1e-9, "a = {}", h.a);
+    }
+
+    #[test]
+    fn groups_obey_the_moes_identities() {
+        let p = LineProblem::from_physical(&heavy_case(), Physics::figs_4_to_7()).unwrap();
+        let g = p.groups;
+        // Identities of the line-contact scaling (exact up to round-off).
+        assert!((g.alpha_bar / (g.l * (g.m / (2.0 * PI)).sqrt()) - 1.0).abs() < 1e-12);
+        assert!((g.lambda / (3.0 * PI * PI / (8.0 * g.m * g.m)) - 1.0).abs() < 1e-12);
+        assert!((g.moes_film_scale / (8.0 * g.m / PI) - 1.0).abs() < 1e-12);
+        assert!((g.poiseuille_stress_scale / (6.0 * g.n / g.lambda) - 1.0).abs() < 1e-12);
+        // Hand values: U = eta0 u_s / (E' Rx) = 4.9140e-11, W' = 2 pi (p_H/E')^2 = 1.1072e-3,
+        // M = W' U^{-1/2} = 157.9, L = alpha E' U^{1/4} = 12.93 (4 digits).
+        assert!((g.m - 157.9).abs() < 0.1, "M = {}", g.m);
+        assert!((g.l - 12.93).abs() < 0.01, "L = {}", g.l);
+        // S-bar = S sqrt(u_s eta0 E' / Rx) / tau0 = 1.98033e-4 (hand, 6 digits).
+        assert!((g.s_bar - 1.98033e-4).abs() < 1e-9, "S-bar = {}", g.s_bar);
+    }
+
+    #[test]
+    fn dimensionless_form_reproduces_the_physical_groups() {
+        let phys = LineProblem::from_physical(&heavy_case(), Physics::figs_4_to_7()).unwrap();
+        let g = phys.groups;
+        let d = LineDimensionlessCase {
+            m: g.m,
+            l: g.l,
+            s_bar: g.s_bar,
+            slip: g.slip,
+            eta0_pa_s: Some(8.24e-3),
+            ph_pa: Some(3e9),
+        };
+        let p = LineProblem::from_dimensionless(&d, Physics::figs_4_to_7()).unwrap();
+        for (a, b, what) in [
+            (p.groups.lambda, g.lambda, "lambda"),
+            (p.groups.alpha_bar, g.alpha_bar, "alpha_bar"),
+            (p.groups.n, g.n, "N"),
+            (p.groups.moes_film_scale, g.moes_film_scale, "moes scale"),
+            (
+                p.groups.poiseuille_stress_scale,
+                g.poiseuille_stress_scale,
+                "G scale",
+            ),
+            (p.viscosity.eta_bar(1.0), phys.viscosity.eta_bar(1.0), "eta"),
+            (p.tau_c(), phys.tau_c(), "tau_c"),
+        ] {
+            // Round-off through different routes (powers and square roots): 1e-10.
+            assert!((a / b - 1.0).abs() < 1e-10, "{what}: {a} vs {b}");
+        }
+    }
+
+    #[test]
+    fn moes_formula_meets_its_asymptotes() {
+        let f = LineFilmFormula::Moes;
+        // Elastic-piezoviscous corner (large M, large L): H_EP dominates; the combination
+        // adds the other asymptotes with exponents 7/2 and s, a few per cent at M = 1e4.
+        let (m, l) = (1e4_f64, 20.0_f64);
+        let h_ep = 1.311 * m.powf(-0.125) * l.powf(0.75);
+        assert!((f.hc(m, l) / h_ep - 1.0).abs() < 0.05);
+        // Rigid-isoviscous corner (small M, L -> 0): 3/M.
+        let (m, l) = (0.01, 1e-3);
+        assert!((f.hc(m, l) / (3.0 / m) - 1.0).abs() < 1e-3);
+        // The Dowson formulas are Moes-similar: spot values by hand (4 digits).
+        assert!((LineFilmFormula::DowsonToyoda.hc(100.0, 10.0) - 4.3452).abs() < 5e-4);
+        assert!((LineFilmFormula::DowsonHigginson.hc(100.0, 10.0) - 3.1083).abs() < 5e-4);
+    }
+
+    #[test]
+    fn eyring_flow_functions() {
+        // F(G) = 3 (G cosh G - sinh G)/G^3 at G = 1: 3 (cosh 1 - sinh 1) = 3/e = 1.10364.
+        assert!((eyring_f(1.0) - 3.0 / std::f64::consts::E).abs() < 1e-14);
+        // Continuity at the series switches: truncation (< 1e-12 at G = 0.1) plus the
+        // cancellation of the closed forms there (~ 1e-13).
+        for s in [0.1, 1e-3] {
+            let (a, b) = (eyring_f(s * (1.0 - 1e-13)), eyring_f(s * (1.0 + 1e-13)));
+            assert!((a - b).abs() < 1e-12);
+            let (a, b) = (
+                g_over_sinh(s * (1.0 - 1e-13)),
+                g_over_sinh(s * (1.0 + 1e-13)),
+            );
+            assert!((a - b).abs() < 1e-12);
+            let (a, b) = (
+                f_g_over_sinh(s * (1.0 - 1e-13)),
+                f_g_over_sinh(s * (1.0 + 1e-13)),
+            );
+            assert!((a - b).abs() < 1e-12);
+        }
+        for g in [0.3, 2.0, 20.0] {
+            assert!((f_g_over_sinh(g) / (eyring_f(g) * g_over_sinh(g)) - 1.0).abs() < 1e-12);
+        }
+        // The exact flow tends to the perturbation form as G -> 0, for any Couette stress.
+        let (e, p) = (LineEyringFlow::Exact, LineEyringFlow::Perturbation);
+        let r = Rheology::Eyring;
+        for (h, eta, ns) in [(0.02, 1e20, 1e-3), (0.5, 3.0, 0.01)] {
+            let ce = e.conductance(r, h, eta, ns, 1e-6);
+            let cp = p.conductance(r, h, eta, ns, 1e-6);
+            assert!((ce / cp - 1.0).abs() < 1e-10);
+        }
+        // Huge G and viscosity stay finite; the flux conductance * G saturates (-> 3 h^2 N S).
+        let c = e.conductance(r, 0.01, 1e25, 1e-3, 1e4);
+        assert!(c.is_finite() && c > 0.0);
+        // Mean stress: sinh(tau_m) = x G / sinh G.
+        let tau = e.mean_shear_stress(r, 50.0, 2.0);
+        assert!((tau.sinh() - 50.0 * 2.0 / 2f64.sinh()).abs() < 1e-10);
+        assert_eq!(
+            e.mean_shear_stress(Rheology::Newtonian, 3.0, 5.0),
+            3.0,
+            "Newtonian: superposition"
+        );
+    }
+
+    #[test]
+    fn bad_fields_are_named() {
+        let phys = Physics::figs_4_to_7();
+        let mut c = heavy_case();
+        c.slip = -0.1;
+        let e = LineProblem::from_physical(&c, phys).unwrap_err();
+        assert!(e.to_string().starts_with("slip:"), "{e}");
+        let mut c = heavy_case();
+        c.tau0_pa = 0.0;
+        let e = LineProblem::from_physical(&c, phys).unwrap_err();
+        assert!(e.to_string().starts_with("tau0:"), "{e}");
+        let mut c = heavy_case();
+        c.rx_m = f64::NAN;
+        let e = LineProblem::from_physical(&c, phys).unwrap_err();
+        assert!(e.to_string().starts_with("rx:"), "{e}");
+        let d = LineDimensionlessCase {
+            m: 100.0,
+            l: 10.0,
+            s_bar: 0.1,
+            slip: 0.001,
+            eta0_pa_s: None,
+            ph_pa: None,
+        };
+        let e = LineProblem::from_dimensionless(&d, phys).unwrap_err();
+        assert!(e.to_string().starts_with("ph:"), "{e}");
+        // Barus incompressible needs neither.
+        assert!(LineProblem::from_dimensionless(&d, Physics::default()).is_ok());
+    }
+}
