@@ -2,7 +2,7 @@
 CARGO ?= cargo
 LEVEL ?= 7
 
-.PHONY: build test figures table4 lint clean
+.PHONY: build test figures table4 snapshots check lint clean
 
 build:
 	$(CARGO) build --release
@@ -11,9 +11,18 @@ build:
 test:
 	$(CARGO) test --release --all-targets
 
-# Regenerate the paper's artefacts (for now: Table 4, the grid-convergence study).
+# Regenerate the paper: Tables 1-4, Figs. 1-7, figures/summary.csv and figures/index.html
+# at the working level (LEVEL, default 7). Solved cases are cached in .repro-cache/.
 figures: build
-	./target/release/repro table4
+	./target/release/repro all --level $(LEVEL)
+
+# Show how the results differ from snapshots/, then make them the new baselines.
+snapshots: build
+	./target/release/repro check --accept
+
+# Compare every target with snapshots/ (also part of `make test`).
+check: build
+	./target/release/repro check
 
 table4: build
 	./target/release/repro table4

@@ -55,8 +55,31 @@ pub enum Command {
     All(TargetArgs),
     /// Run your own sweep file (the format of cases/*.toml) and put it on the mastercurve.
     Run(RunArgs),
+    /// Recompute targets at the CI profile and compare them with the committed snapshots.
+    ///
+    /// Every target (or those named) is built at level 5 with every 4th case of the large
+    /// sweeps, into a temporary folder, and each CSV cell is compared with snapshots/: numbers
+    /// within a relative 1e-4, text exactly. Exits 1 naming the target, case, column, baseline
+    /// and new value of every difference. With --accept the differences are shown and the new
+    /// results become the baselines (what `make snapshots` runs).
+    Check(CheckArgs),
     /// List the targets.
     List,
+}
+
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// Targets to check (default: all, and the summary).
+    pub targets: Vec<String>,
+    /// Show the differences, then make the new results the baselines.
+    #[arg(long)]
+    pub accept: bool,
+    /// Folder of the baselines.
+    #[arg(long, default_value = "snapshots")]
+    pub snapshots: PathBuf,
+    /// No progress on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
 }
 
 #[derive(Debug, Args)]

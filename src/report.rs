@@ -177,7 +177,7 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
 
 /// A progress line per target on stderr: rewritten in place on a terminal, every tenth of the
 /// cases otherwise.
-fn run_progress(quiet: bool) -> impl Fn(&str, RunProgress) + Sync {
+pub(crate) fn run_progress(quiet: bool) -> impl Fn(&str, RunProgress) + Sync {
     let tty = std::io::stderr().is_terminal();
     move |name: &str, p: RunProgress| {
         if quiet {
@@ -201,7 +201,7 @@ fn run_progress(quiet: bool) -> impl Fn(&str, RunProgress) + Sync {
     }
 }
 
-fn summary_line(b: &Built) -> String {
+pub(crate) fn summary_line(b: &Built) -> String {
     let mut line = format!("{}: {} cases", b.name, b.cases);
     if let (Some(s), Some(c)) = (b.solved, b.cached) {
         line.push_str(&format!(", {s} solved, {c} cached"));
@@ -221,7 +221,7 @@ fn summary_line(b: &Built) -> String {
     line
 }
 
-fn context<'a>(
+pub(crate) fn context<'a>(
     args: &TargetArgs,
     progress: &'a (dyn Fn(&str, RunProgress) + Sync),
     warn: &'a (dyn Fn(String) + Sync),
@@ -236,10 +236,11 @@ fn context<'a>(
         level: args.level,
         progress,
         warn,
+        stride: 1,
     })
 }
 
-fn warner(quiet: bool) -> impl Fn(String) + Sync {
+pub(crate) fn warner(quiet: bool) -> impl Fn(String) + Sync {
     move |w: String| {
         if !quiet {
             eprintln!("warning: {w}");
@@ -271,9 +272,8 @@ pub fn all(args: &TargetArgs) -> Result<bool> {
     Ok(true)
 }
 
-/// `repro run my-study.toml`.
+/// `repro run my-study.toml`: the same pipeline as a figure target.
 pub fn run_study(args: &RunArgs) -> Result<bool> {
-    use repro::artefacts::fit::fit;
     let sweep = repro::artefacts::sweep::Sweep::read(&args.file)?;
     let progress = run_progress(args.target.quiet);
     let warn = warner(args.target.quiet);
@@ -284,41 +284,10 @@ pub fn run_study(args: &RunArgs) -> Result<bool> {
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "study".into());
     let t = std::time::Instant::now();
-    let (runs, level) = targets::run_sweep(&stem, &sweep, &ctx)
+    let mut built = targets::study(&stem, &sweep, &ctx)
         .map_err(|e| anyhow::anyhow!("{}: {e}", args.file.display()))?;
-    let xy = |r: &repro::artefacts::run::CaseRun| {
-        r.record()
-            .map(|rec| (r.problem.tau_c(), rec.mu_bar_sliding))
-    };
-    let csv_text = targets::runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", xy);
-    let csv_path = args.target.out.join(format!("{stem}.csv"));
-    csv::write_atomic(&csv_path, &csv_text)
-        .with_context(|| format!("--out: cannot write {}", csv_path.display()))?;
-    let svg = repro::artefacts::figures::svg(&stem, &sweep.title, &runs, &xy, false, false)
-        .map_err(anyhow::Error::msg)?;
-    let svg_path = args.target.out.join(format!("{stem}.svg"));
-    if let Some(svg) = svg {
-        csv::write_atomic(&svg_path, &svg)
-            .with_context(|| format!("--out: cannot write {}", svg_path.display()))?;
-    }
-    let points: Vec<(f64, f64)> = runs.iter().filter_map(xy).collect();
-    let solved = points.len();
-    println!(
-        "{stem}: {} cases, {solved} solved, {} cached, level {level}, {:.1} s -> {}, {}",
-        runs.len(),
-        runs.iter().filter(|r| r.cached).count(),
-        t.elapsed().as_secs_f64(),
-        csv_path.display(),
-        svg_path.display()
-    );
-    if let Some(f) = fit(&points) {
-        println!(
-            "mastercurve: fitted c = {:.3} over {} points (paper: 5); deviation from Eq. (13): RMS {:.1} %, largest {:.1} %",
-            f.c,
-            f.points,
-            100.0 * f.rms_rel_dev,
-            100.0 * f.max_rel_dev
-        );
-    }
-    Ok(solved == runs.len())
+    built.seconds = t.elapsed().as_secs_f64();
+    println!("{}", summary_line(&built).replacen("study", &stem, 1));
+    println!("mastercurve (paper: c = 5): {}", built.ours);
+    Ok(built.solved == Some(built.cases))
 }

@@ -1,4 +1,6 @@
 //! Integration tests: one binary, so the crate links once.
 
+mod check;
 mod cli;
 mod point_contact;
+mod text;

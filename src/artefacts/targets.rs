@@ -74,7 +74,13 @@ pub struct Context<'a> {
     pub progress: &'a (dyn Fn(&str, RunProgress) + Sync),
     /// Hears of warnings (corrupt cache entries, failed cases).
     pub warn: &'a (dyn Fn(String) + Sync),
+    /// Solve every `stride`-th case of sweeps larger than [`SAMPLED_ABOVE`] cases (the
+    /// snapshot profile); 1 solves them all.
+    pub stride: usize,
 }
+
+/// Sweeps with more cases than this are sampled when [`Context::stride`] is above 1.
+pub const SAMPLED_ABOVE: usize = 200;
 
 /// What building a target produced: the row of `figures/summary.csv` and the report's entry.
 #[derive(Debug, Clone)]
@@ -454,13 +460,12 @@ pub fn run_sweep(label: &str, sweep: &Sweep, ctx: &Context) -> Result<(Vec<CaseR
     let level = ctx.level.or(sweep.level).unwrap_or(WORKING_LEVEL);
     let params = Params::at_level(level);
     let progress = |p: RunProgress| (ctx.progress)(label, p);
-    let runs = run_cases(
-        &sweep.cases,
-        &params,
-        ctx.cache.as_ref(),
-        &progress,
-        ctx.warn,
-    )?;
+    let cases: Vec<_> = if ctx.stride > 1 && sweep.cases.len() > SAMPLED_ABOVE {
+        sweep.cases.iter().step_by(ctx.stride).cloned().collect()
+    } else {
+        sweep.cases.clone()
+    };
+    let runs = run_cases(&cases, &params, ctx.cache.as_ref(), &progress, ctx.warn)?;
     Ok((runs, level))
 }
 
@@ -618,11 +623,42 @@ pub fn runs_csv(
 fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
     let spec = figure_spec(name);
     let sweep = shipped_sweep(spec.sweep).map_err(|e| e.to_string())?;
-    let (runs, level) = run_sweep(name, &sweep, ctx)?;
+    let claim = match name {
+        "fig1" => "friction collapses on one curve for S-bar^(1/4) M L^3 >= 1e4, scattered below",
+        "fig2" => "total mu-bar follows Eq. (13), c = 5, except a cluster at low tau_c where rolling friction dominates",
+        _ => "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)",
+    };
+    let mut built = sweep_figure(name, &sweep, &spec, ctx)?;
+    built.name = name;
+    built.paper_claim = claim.to_string();
+    Ok(built)
+}
+
+/// A user's own sweep (`repro run`), drawn and fitted as Figs. 3-7: sliding `mu-bar` against
+/// `tau_c`, files named after `stem`.
+pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<Built, String> {
+    let spec = FigureSpec {
+        sweep: "",
+        total: false,
+        severity: false,
+    };
+    let mut built = sweep_figure(stem, sweep, &spec, ctx)?;
+    built.paper_claim = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)".into();
+    Ok(built)
+}
+
+/// Runs `sweep`, writes `<stem>.csv` and `<stem>.svg`, fits the mastercurve.
+fn sweep_figure(
+    stem: &str,
+    sweep: &Sweep,
+    spec: &FigureSpec,
+    ctx: &Context,
+) -> Result<Built, String> {
+    let (runs, level) = run_sweep(stem, sweep, ctx)?;
     for (i, r) in runs.iter().enumerate() {
         if let Outcome::Failed { error, .. } = &r.outcome {
             (ctx.warn)(format!(
-                "{name}: case {} (M {:.4}, L {:.4}, S-bar {:.3e}) failed: {error}",
+                "{stem}: case {} (M {:.4}, L {:.4}, S-bar {:.3e}) failed: {error}",
                 i + 1,
                 r.problem.groups.m,
                 r.problem.groups.l,
@@ -637,19 +673,12 @@ fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
     };
     let csv = write(
         ctx,
-        &format!("{name}.csv"),
-        &runs_csv(&runs, xname, yname, |r| xy(r, &spec)),
+        &format!("{stem}.csv"),
+        &runs_csv(&runs, xname, yname, |r| xy(r, spec)),
     )?;
     let points: Vec<(f64, f64)> = runs
         .iter()
-        .filter_map(|r| {
-            r.record().map(|_| {
-                (
-                    r.problem.tau_c(),
-                    xy(r, &spec).map(|p| p.1).unwrap_or(f64::NAN),
-                )
-            })
-        })
+        .filter_map(|r| xy(r, spec).map(|p| (r.problem.tau_c(), p.1)))
         .collect();
     let (fit_range, fit_all) = if spec.severity {
         (None, None)
@@ -665,14 +694,14 @@ fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
     };
     let mut files = vec![csv];
     if let Some(svg) = super::figures::svg(
-        name,
+        stem,
         &sweep.title,
         &runs,
-        &|r| xy(r, &spec),
+        &|r| xy(r, spec),
         spec.severity,
         spec.total,
     )? {
-        files.push(write(ctx, &format!("{name}.svg"), &svg)?);
+        files.push(write(ctx, &format!("{stem}.svg"), &svg)?);
     }
     let solved = runs.iter().filter(|r| r.record().is_some()).count();
     let cached = runs.iter().filter(|r| r.cached).count();
@@ -689,13 +718,8 @@ fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
         ),
         None => format!("{solved} of {} cases solved", runs.len()),
     };
-    let claim = match name {
-        "fig1" => "friction collapses on one curve for S-bar^(1/4) M L^3 >= 1e4, scattered below",
-        "fig2" => "total mu-bar follows Eq. (13), c = 5, except a cluster at low tau_c where rolling friction dominates",
-        _ => "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)",
-    };
     Ok(Built {
-        name,
+        name: "study",
         title: sweep.title.clone(),
         cases: runs.len(),
         solved: Some(solved),
@@ -705,12 +729,12 @@ fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
         fit_all,
         seconds: 0.0,
         files,
-        paper_claim: claim.to_string(),
+        paper_claim: String::new(),
         ours,
     })
 }
 
-/// Builds every target in order and writes `summary.csv`; stops at the first target that
+/// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
 /// cannot be built (a solve that fails is a result, not a stop).
 pub fn build_all(names: &[&str], ctx: &Context) -> Result<Vec<Built>, String> {
     let mut built = Vec::new();
@@ -718,6 +742,8 @@ pub fn build_all(names: &[&str], ctx: &Context) -> Result<Vec<Built>, String> {
         built.push(build(n, ctx)?);
     }
     write(ctx, "summary.csv", &summary_csv(&built))?;
+    let read = |f: &str| std::fs::read_to_string(ctx.out.join(f)).ok();
+    write(ctx, "index.html", &super::html::index_html(&built, &read))?;
     Ok(built)
 }
 

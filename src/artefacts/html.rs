@@ -1,0 +1,206 @@
+//! The report, `figures/index.html`: every table and figure beside the paper's claim and our
+//! result, one self-contained page that opens from disk (figures are linked by relative path,
+//! no scripts, no fonts, no network).
+
+use super::targets::Built;
+
+/// Escapes text for HTML element content and attribute values.
+fn escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A CSV (as `csv::table` writes it: no quoted commas) as an HTML table, at most `max_rows`
+/// rows, the rest counted below it.
+fn csv_table(csv: &str, max_rows: usize) -> String {
+    let mut lines = csv.lines();
+    let Some(header) = lines.next() else {
+        return String::new();
+    };
+    let mut out = String::from("<table>\n<tr>");
+    for h in header.split(',') {
+        out.push_str(&format!("<th>{}</th>", escape(h)));
+    }
+    out.push_str("</tr>\n");
+    let rows: Vec<&str> = lines.collect();
+    for row in rows.iter().take(max_rows) {
+        out.push_str("<tr>");
+        for cell in row.split(',') {
+            out.push_str(&format!("<td>{}</td>", escape(cell)));
+        }
+        out.push_str("</tr>\n");
+    }
+    out.push_str("</table>\n");
+    if rows.len() > max_rows {
+        out.push_str(&format!(
+            "<p class=\"note\">{} more rows in the CSV.</p>\n",
+            rows.len() - max_rows
+        ));
+    }
+    out
+}
+
+/// One target's section: claim, result, counts, its SVG (if any) and its table (tables only).
+fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
+    let mut s = format!(
+        "<section id=\"{name}\">\n<h2>{title}</h2>\n<dl>\n<dt>paper</dt><dd>{claim}</dd>\n<dt>ours</dt><dd>{ours}</dd>\n",
+        name = escape(b.name),
+        title = escape(&b.title),
+        claim = escape(&b.paper_claim),
+        ours = escape(&b.ours),
+    );
+    let mut facts = vec![format!("{} cases", b.cases)];
+    if let Some(n) = b.solved {
+        facts.push(format!("{n} solved"));
+    }
+    if let Some(n) = b.cached {
+        facts.push(format!("{n} from the cache"));
+    }
+    if let Some(l) = b.level {
+        facts.push(format!("level {l}"));
+    }
+    facts.push(format!("{:.1} s", b.seconds));
+    s.push_str(&format!(
+        "<dt>run</dt><dd>{}</dd>\n",
+        escape(&facts.join(", "))
+    ));
+    if let Some(f) = b.fit {
+        s.push_str(&format!(
+            "<dt>fit</dt><dd>paper: c = 5; ours: c = {:.2} over {} points, RMS deviation from Eq. (13) {:.1} %, largest {:.1} %</dd>\n",
+            f.c,
+            f.points,
+            100.0 * f.rms_rel_dev,
+            100.0 * f.max_rel_dev
+        ));
+    }
+    s.push_str("</dl>\n");
+    for f in &b.files {
+        if f.ends_with(".svg") {
+            s.push_str(&format!(
+                "<p><img src=\"{f}\" alt=\"{alt}\" width=\"800\"></p>\n",
+                f = escape(f),
+                alt = escape(&b.title)
+            ));
+        }
+    }
+    let has_svg = b.files.iter().any(|f| f.ends_with(".svg"));
+    for f in &b.files {
+        if f.ends_with(".csv") && !has_svg {
+            if let Some(text) = read(f) {
+                s.push_str(&csv_table(&text, 30));
+            }
+        }
+    }
+    let links: Vec<String> = b
+        .files
+        .iter()
+        .map(|f| format!("<a href=\"{0}\">{0}</a>", escape(f)))
+        .collect();
+    s.push_str(&format!(
+        "<p class=\"files\">files: {}</p>\n</section>\n",
+        links.join(" ")
+    ));
+    s
+}
+
+/// The whole page. `read(name)` returns a file of the output folder (the tables' CSVs).
+pub fn index_html(built: &[Built], read: &dyn Fn(&str) -> Option<String>) -> String {
+    let mut page = String::from(
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+<title>repro: A Generalized Traction Curve for EHL Contacts</title>\n<style>\n\
+body { font-family: sans-serif; max-width: 60em; margin: 2em auto; padding: 0 1em; }\n\
+table { border-collapse: collapse; font-size: 0.85em; }\n\
+td, th { border: 1px solid #ccc; padding: 0.2em 0.5em; text-align: right; }\n\
+dt { font-weight: bold; float: left; width: 4em; }\n\
+dd { margin-left: 5em; }\n\
+.note, .files { color: #555; font-size: 0.9em; }\n\
+</style>\n</head>\n<body>\n\
+<h1>A Generalized Traction Curve for EHL Contacts: the paper regenerated</h1>\n\
+<p>Jacod, Venner and Lugt, ASME J. Tribology 2001, recomputed from first principles by \
+<code>repro</code>. Each section sets the paper's claim beside what this run computed; \
+the CSV files hold every case. Nothing on this page is copied from the paper except the \
+claims quoted as &ldquo;paper&rdquo;.</p>\n<ul>\n",
+    );
+    for b in built {
+        page.push_str(&format!(
+            "<li><a href=\"#{0}\">{1}</a></li>\n",
+            escape(b.name),
+            escape(&b.title)
+        ));
+    }
+    page.push_str("</ul>\n");
+    for b in built {
+        page.push_str(&section(b, read));
+    }
+    page.push_str("</body>\n</html>\n");
+    page
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::artefacts::fit::Fit;
+
+    fn built(name: &'static str, files: &[&str], fit: Option<Fit>) -> Built {
+        Built {
+            name,
+            title: format!("{name} <title>"),
+            cases: 3,
+            solved: Some(2),
+            cached: Some(1),
+            level: Some(7),
+            fit,
+            fit_all: None,
+            seconds: 1.25,
+            files: files.iter().map(|s| s.to_string()).collect(),
+            paper_claim: "c = 5".into(),
+            ours: "c = 4.93 & more".into(),
+        }
+    }
+
+    #[test]
+    fn page_links_every_target_and_escapes_text() {
+        let fit = Fit {
+            points: 2,
+            c: 4.9312,
+            rms_rel_dev: 0.021,
+            max_rel_dev: 0.05,
+        };
+        let b = [
+            built("table1", &["table1.csv"], None),
+            built("fig3", &["fig3.csv", "fig3.svg"], Some(fit)),
+        ];
+        let read = |f: &str| (f == "table1.csv").then(|| "a,b\n1,2\n".to_string());
+        let page = index_html(&b, &read);
+        assert!(page.contains("href=\"#table1\"") && page.contains("href=\"#fig3\""));
+        assert!(page.contains("<img src=\"fig3.svg\""));
+        assert!(
+            page.contains("<td>1</td><td>2</td>"),
+            "table1 shown as a table"
+        );
+        assert!(page.contains("ours: c = 4.93 over 2 points, RMS deviation from Eq. (13) 2.1 %"));
+        assert!(page.contains("table1 &lt;title&gt;") && page.contains("4.93 &amp; more"));
+        assert!(!page.contains("<title>table1"), "titles are escaped");
+    }
+
+    #[test]
+    fn long_tables_are_cut_with_a_count() {
+        let csv = std::iter::once("x".to_string())
+            .chain((0..40).map(|i| i.to_string()))
+            .collect::<Vec<_>>()
+            .join("\n");
+        let t = csv_table(&csv, 30);
+        assert_eq!(t.matches("<tr>").count(), 31);
+        assert!(t.contains("10 more rows"));
+    }
+}

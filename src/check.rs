@@ -1,0 +1,90 @@
+//! `repro check`: recompute targets at the snapshot profile and compare with the baselines.
+
+use crate::cli::{CheckArgs, TargetArgs};
+use crate::report::{context, run_progress, summary_line, warner};
+use anyhow::{bail, Result};
+use repro::artefacts::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
+use repro::artefacts::targets::{self, TARGETS};
+
+/// Differences printed before the rest are only counted.
+const SHOWN: usize = 40;
+
+pub fn check(args: &CheckArgs) -> Result<bool> {
+    let all = args.targets.is_empty();
+    let names: Vec<&str> = if all {
+        TARGETS.iter().map(|t| t.name).collect()
+    } else {
+        args.targets.iter().map(String::as_str).collect()
+    };
+    for n in &names {
+        if targets::target(n).is_none() {
+            let known: Vec<&str> = TARGETS.iter().map(|t| t.name).collect();
+            bail!("unknown target '{n}' (known: {})", known.join(", "));
+        }
+    }
+    let work = std::env::temp_dir().join(format!("repro-check-{}", std::process::id()));
+    let target_args = TargetArgs {
+        level: Some(PROFILE_LEVEL),
+        out: work.join("out"),
+        cache: work.join("cache"),
+        no_cache: false,
+        quiet: args.quiet,
+    };
+    let progress = run_progress(args.quiet);
+    let warn = warner(true);
+    let mut ctx = context(&target_args, &progress, &warn)?;
+    ctx.stride = PROFILE_STRIDE;
+    let result = (|| -> Result<bool> {
+        let built = if all {
+            targets::build_all(&names, &ctx).map_err(anyhow::Error::msg)?
+        } else {
+            names
+                .iter()
+                .map(|n| targets::build(n, &ctx))
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(anyhow::Error::msg)?
+        };
+        if !args.quiet {
+            for b in &built {
+                eprintln!("  {}", summary_line(b));
+            }
+        }
+        let files = snapshot::csv_files(&built, all);
+        let diffs =
+            snapshot::check_files(&args.snapshots, &ctx.out, &files).map_err(anyhow::Error::msg)?;
+        for d in diffs.iter().take(SHOWN) {
+            eprintln!("{}", d);
+        }
+        if diffs.len() > SHOWN {
+            eprintln!("... and {} more differences", diffs.len() - SHOWN);
+        }
+        if args.accept {
+            snapshot::accept(&args.snapshots, &ctx.out, &files).map_err(anyhow::Error::msg)?;
+            println!(
+                "accepted {} files into {} ({} differences above)",
+                files.len(),
+                args.snapshots.display(),
+                diffs.len()
+            );
+            return Ok(true);
+        }
+        if diffs.is_empty() {
+            println!(
+                "check: {} files of {} targets agree with {} (level {PROFILE_LEVEL}, every {PROFILE_STRIDE}th case of the large sweeps)",
+                files.len(),
+                built.len(),
+                args.snapshots.display()
+            );
+            Ok(true)
+        } else {
+            println!(
+                "check: {} differences from {}; if intended, run `make snapshots`",
+                diffs.len(),
+                args.snapshots.display()
+            );
+            Ok(false)
+        }
+    })();
+    let _ = std::fs::remove_dir_all(&work);
+    result
+}
