@@ -212,7 +212,7 @@ pub struct SolveArgs {
     #[arg(long, value_enum, default_value = "paper", help_heading = "Numerics")]
     pub domain: DomainArg,
     /// Most multigrid cycles on the finest level.
-    #[arg(long = "max-cycles", default_value_t = 40, help_heading = "Numerics")]
+    #[arg(long = "max-cycles", default_value_t = repro::solver::point::Params::default().max_cycles, help_heading = "Numerics")]
     pub max_cycles: usize,
     /// Skip the rolling (Poiseuille) part of the friction.
     #[arg(long = "no-rolling", help_heading = "Numerics")]

@@ -193,3 +193,42 @@ fn list_names_the_targets() {
     assert_eq!(code, 0);
     assert!(out.contains("table4"));
 }
+
+/// Bad study files and output folders: a message naming the file and the field, exit 2,
+/// nothing written.
+#[test]
+fn bad_study_files_name_the_file_and_field() {
+    let dir = std::env::temp_dir().join(format!("repro-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cases = [
+        ("negative.toml", "title = \"x\"\n[grid]\nph_gpa = [-1.0]\num_m_s = [1.0]\nslip = [0.01]\ntau0_mpa = [4.0]\nalpha_per_gpa = [20.0]\neta0_mpa_s = [10.0]\nrx_m = [0.01]\nd = [1.0]\ne_prime_gpa = [226.0]\n", "case 1: ph"),
+        ("unknown.toml", "title = \"x\"\nfoo = 3\n", "unknown field `foo`"),
+        ("missing.toml", "title = \"x\"\n[grid]\nph_gpa = [1.0]\n", "lubricant: missing"),
+    ];
+    for (name, text, needle) in cases {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        let out = dir.join("out");
+        let (code, _, err) = repro(&[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "-q",
+        ]);
+        assert_eq!(code, 2, "{name}: {err}");
+        assert!(err.contains(name), "{name}: names the file: {err}");
+        assert!(err.contains(needle), "{name}: names the field: {err}");
+        assert!(!out.join(name.replace(".toml", ".csv")).exists());
+    }
+    let (code, _, err) = repro(&["table1", "--out", "/proc/no-such-dir", "-q"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--out") && err.contains("/proc/no-such-dir"),
+        "{err}"
+    );
+    let (code, _, err) = repro(&["check", "fig9", "-q"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown target 'fig9'"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

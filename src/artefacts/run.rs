@@ -85,6 +85,23 @@ pub struct CaseRun {
 
 impl CaseRun {
     /// The record when solved.
+    /// A short, stable name of the failure (no numbers, so that it is the same on every
+    /// machine), or `None` when solved.
+    pub fn failure_kind(&self) -> Option<&'static str> {
+        let Outcome::Failed { error, .. } = &self.outcome else {
+            return None;
+        };
+        Some(if error.starts_with("not converged") {
+            "not converged"
+        } else if error.starts_with("film thickness became non-positive") {
+            "film collapse"
+        } else if error.starts_with("non-finite") {
+            "non-finite"
+        } else {
+            "failed"
+        })
+    }
+
     pub fn record(&self) -> Option<&Record> {
         match &self.outcome {
             Outcome::Solved(r) => Some(r),

@@ -578,17 +578,12 @@ pub fn runs_csv(
                     "solved".to_string(),
                 ),
                 Outcome::Failed {
-                    error,
-                    residual_history,
+                    residual_history, ..
                 } => {
                     let mut cells = vec![String::new(); 12];
                     cells[9] = residual_history.len().to_string();
                     cells[10] = opt(residual_history.last().copied());
-                    let kind = error
-                        .split(':')
-                        .next()
-                        .unwrap_or("failed")
-                        .replace(',', ";");
+                    let kind = r.failure_kind().unwrap_or("failed");
                     (cells, format!("failed: {kind}"))
                 }
             };
