@@ -129,6 +129,8 @@ pub enum RheologyArg {
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum DomainArg {
+    /// The paper's domain from M = 300 up, the wide one below (as every target does).
+    Auto,
     /// -2.5 <= X <= 1.5, -2 <= Y <= 2: the paper's (reproduces Table 4).
     Paper,
     /// -4.5 <= X <= 1.5, -3 <= Y <= 3: a longer inlet for lightly loaded contacts (M < 100).
@@ -209,7 +211,7 @@ pub struct SolveArgs {
     #[arg(long, default_value_t = 7, help_heading = "Numerics")]
     pub level: u32,
     /// Computational domain.
-    #[arg(long, value_enum, default_value = "paper", help_heading = "Numerics")]
+    #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub domain: DomainArg,
     /// Most multigrid cycles on the finest level.
     #[arg(long = "max-cycles", default_value_t = repro::solver::point::Params::default().max_cycles, help_heading = "Numerics")]
@@ -319,11 +321,12 @@ impl SolveArgs {
         Ok(Case { spec, physics })
     }
 
-    /// Solver parameters from the numerics flags.
-    pub fn params(&self) -> Result<Params> {
+    /// Solver parameters from the numerics flags, for a contact of Moes load `m`.
+    pub fn params(&self, m: f64) -> Result<Params> {
         Ok(Params {
             level: check_level("--level", self.level)?,
             domain: match self.domain {
+                DomainArg::Auto => Domain::for_load(m),
                 DomainArg::Paper => Domain::default(),
                 DomainArg::Wide => Domain::wide(),
             },

@@ -43,8 +43,8 @@ fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
 /// `repro solve`: returns false when the solve failed (after printing why).
 pub fn solve(args: &SolveArgs) -> Result<bool> {
     let case = args.case()?;
-    let params = args.params()?;
     let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
+    let params = args.params(problem.groups.m)?;
     let mut printer = progress_printer(args.quiet);
     let solution = match solve_point(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,

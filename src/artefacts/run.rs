@@ -4,6 +4,7 @@
 use super::cache::{key_of, Cache, Lookup};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
+use crate::solver::grid::Domain;
 use crate::solver::point::{solve, Params, PointSolution, SOLVER_REVISION};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -110,7 +111,9 @@ impl CaseRun {
     }
 }
 
-/// The cache key of a case at the given solver parameters.
+/// The cache key of a case at the given solver parameters: the case, the parameters a target
+/// can set (level, domain, rolling friction) and the solver revision, which is raised whenever
+/// a default parameter or the numerics change.
 pub fn case_key(case: &Case, params: &Params) -> String {
     let d = &params.domain;
     key_of(&(
@@ -120,6 +123,15 @@ pub fn case_key(case: &Case, params: &Params) -> String {
         params.rolling_friction,
         SOLVER_REVISION,
     ))
+}
+
+/// The parameters a case of a sweep is solved with: `params` on the domain its load calls
+/// for ([`Domain::for_load`]).
+pub fn case_params(params: &Params, problem: &Problem) -> Params {
+    Params {
+        domain: Domain::for_load(problem.groups.m),
+        ..params.clone()
+    }
 }
 
 /// Progress of a run, reported after each case.
@@ -158,6 +170,7 @@ pub fn run_cases(
         .par_iter()
         .zip(problems.into_par_iter())
         .map(|(case, problem)| {
+            let params = &case_params(params, &problem);
             let key = case_key(case, params);
             let looked = cache.map(|c| c.get::<Outcome>(&key));
             let (outcome, cached) = match looked {
