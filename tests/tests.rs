@@ -2,3 +2,5 @@
 
 mod cli;
 mod point_contact;
+mod predict;
+mod traction;

@@ -3,8 +3,10 @@
 
 pub mod cache;
 pub mod csv;
+pub mod fig8;
 pub mod figures;
 pub mod fit;
+pub mod measured;
 pub mod plot;
 pub mod run;
 pub mod sweep;
