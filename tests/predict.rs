@@ -247,7 +247,7 @@ fn fig8_transforms_every_dataset_and_names_bad_rows() {
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines.len(), 4, "{csv}");
     assert!(
-        lines[0].contains("2 measured points from 1 datasets"),
+        lines[0].contains("2 measured points from 1 file(s)"),
         "{csv}"
     );
     // mu-bar = mu p_H / tau0 = 0.05 * 3e9 / 4e6 = 37.5, written with 7 digits.

@@ -48,7 +48,7 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
         format!("# fig8: {NO_DATA}\n")
     } else {
         format!(
-            "# fig8: {} measured points from {files} datasets in {DATA_DIR}/, transformed by Sec. IV (docs/measured-data.md); nothing here is computed by the solver\n",
+            "# fig8: {} measured points from {files} file(s) in {DATA_DIR}/, transformed by Sec. IV (docs/measured-data.md); nothing here is computed by the solver\n",
             rows.len()
         )
     };
@@ -191,7 +191,7 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
             None => format!("no point with tau_c >= {FIT_TAU_C_MIN}"),
         };
         format!(
-            "{} measured points from {} datasets; {dev}; c = {:.2} over all",
+            "{} measured points from {} file(s); {dev}; c = {:.2} over all",
             rows.len(),
             datasets.len(),
             fit_all.map(|f| f.c).unwrap_or(f64::NAN)
