@@ -51,6 +51,11 @@ pub enum Command {
     Fig6(TargetArgs),
     /// Fig. 7: sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2 and 1/5 (Table 3).
     Fig7(TargetArgs),
+    /// Fig. 8: measured friction (cases/fig8/*.csv) transformed by Sec. IV onto Eq. (13).
+    Fig8(TargetArgs),
+    /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
+    /// also the full EHL solve beside it.
+    Predict(Box<crate::predict::PredictArgs>),
     /// Every target, then figures/summary.csv (what `make figures` runs).
     All(TargetArgs),
     /// Run your own sweep file (the format of cases/*.toml) and put it on the mastercurve.
@@ -252,6 +257,55 @@ pub fn check_level(flag: &str, level: u32) -> Result<u32> {
     }
 }
 
+/// The lubricant of the physical form (`repro solve`, `repro predict`): a lubricant of
+/// Table 1 at `--temperature`, or `--alpha` and `--eta0` given directly.
+pub fn lubricant_spec(
+    lubricant: Option<&str>,
+    temperature: Option<f64>,
+    alpha: Option<f64>,
+    eta0: Option<f64>,
+) -> Result<LubricantSpec> {
+    let need = |v: Option<f64>, flag: &str| v.ok_or_else(|| anyhow!("{flag}: required"));
+    Ok(match (lubricant, alpha) {
+        (Some(name), None) => LubricantSpec::Named {
+            lubricant: name.to_string(),
+            temperature_c: need(temperature, "--temperature")?,
+        },
+        (None, Some(alpha)) => LubricantSpec::Given {
+            alpha_per_pa: alpha,
+            eta0_pa_s: need(eta0, "--eta0")?,
+        },
+        (Some(_), Some(_)) => bail!("--lubricant and --alpha cannot be mixed"),
+        (None, None) => bail!("--lubricant: required (or --alpha and --eta0)"),
+    })
+}
+
+/// The physics flags over `defaults`.
+pub fn physics(
+    viscosity: Option<ViscosityArg>,
+    density: Option<DensityArg>,
+    rheology: Option<RheologyArg>,
+    defaults: Physics,
+) -> Physics {
+    Physics {
+        viscosity: match viscosity {
+            Some(ViscosityArg::Barus) => ViscosityLaw::Barus,
+            Some(ViscosityArg::Roelands) => ViscosityLaw::Roelands,
+            None => defaults.viscosity,
+        },
+        density: match density {
+            Some(DensityArg::Incompressible) => DensityLaw::Incompressible,
+            Some(DensityArg::DowsonHigginson) => DensityLaw::DowsonHigginson,
+            None => defaults.density,
+        },
+        rheology: match rheology {
+            Some(RheologyArg::Eyring) => Rheology::Eyring,
+            Some(RheologyArg::Newtonian) => Rheology::Newtonian,
+            None => defaults.rheology,
+        },
+    }
+}
+
 impl SolveArgs {
     /// The case the flags describe (which form, and its physics).
     pub fn case(&self) -> Result<Case> {
@@ -275,17 +329,8 @@ impl SolveArgs {
                 ph_pa: self.ph,
             }),
             (false, true) => {
-                let lubricant = match (&self.lubricant, self.alpha) {
-                    (Some(name), None) => LubricantSpec::Named {
-                        lubricant: name.clone(),
-                        temperature_c: need(self.temperature, "--temperature")?,
-                    },
-                    (None, Some(alpha)) => LubricantSpec::Given { alpha_per_pa: alpha, eta0_pa_s: need(self.eta0, "--eta0")? },
-                    (Some(_), Some(_)) => bail!("--lubricant and --alpha cannot be mixed"),
-                    (None, None) => bail!("--lubricant: required (or --alpha and --eta0)"),
-                };
                 Spec::Physical(PhysicalCase {
-                    lubricant,
+                    lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0)?,
                     ph_pa: need(self.ph, "--ph")?,
                     um_m_s: need(self.um, "--um")?,
                     slip: need(self.slip, "--slip")?,
@@ -301,23 +346,7 @@ impl SolveArgs {
         } else {
             Physics::figs_4_to_7()
         };
-        let physics = Physics {
-            viscosity: match self.viscosity {
-                Some(ViscosityArg::Barus) => ViscosityLaw::Barus,
-                Some(ViscosityArg::Roelands) => ViscosityLaw::Roelands,
-                None => defaults.viscosity,
-            },
-            density: match self.density {
-                Some(DensityArg::Incompressible) => DensityLaw::Incompressible,
-                Some(DensityArg::DowsonHigginson) => DensityLaw::DowsonHigginson,
-                None => defaults.density,
-            },
-            rheology: match self.rheology {
-                Some(RheologyArg::Eyring) => Rheology::Eyring,
-                Some(RheologyArg::Newtonian) => Rheology::Newtonian,
-                None => defaults.rheology,
-            },
-        };
+        let physics = physics(self.viscosity, self.density, self.rheology, defaults);
         Ok(Case { spec, physics })
     }
 

@@ -2,6 +2,7 @@
 
 mod check;
 mod cli;
+mod predict;
 mod report;
 
 use clap::Parser;
@@ -23,6 +24,8 @@ fn main() -> ExitCode {
         Command::Fig5(a) => report::target("fig5", &a),
         Command::Fig6(a) => report::target("fig6", &a),
         Command::Fig7(a) => report::target("fig7", &a),
+        Command::Fig8(a) => report::target("fig8", &a),
+        Command::Predict(a) => predict::predict(&a),
         Command::All(a) => report::all(&a),
         Command::Run(a) => report::run_study(&a),
         Command::Check(a) => check::check(&a),

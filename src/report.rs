@@ -13,7 +13,7 @@ use serde_json::json;
 use std::io::IsTerminal;
 
 /// Prints one progress line per cycle to stderr.
-fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
+pub(crate) fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
     move |p: &Progress| {
         if !quiet {
             eprintln!(
@@ -25,7 +25,7 @@ fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
 }
 
 /// Prefixes a case error with the flag it names.
-fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
+pub(crate) fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
     use repro::physics::case::CaseError;
     use repro::physics::lubricant::LubricantError;
     match e {
@@ -70,7 +70,7 @@ pub fn solve(args: &SolveArgs) -> Result<bool> {
     Ok(true)
 }
 
-fn summary_json(
+pub(crate) fn summary_json(
     problem: &Problem,
     level: &u32,
     s: &PointSolution,

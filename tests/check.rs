@@ -80,7 +80,7 @@ fn small_sweep(tau0_mpa: f64) -> Sweep {
     let text = format!(
         r#"
 title = "snapshot test"
-level = 4
+level = 5
 [physics]
 viscosity = "roelands"
 density = "dowson-higginson"
@@ -105,7 +105,7 @@ fn csv_of(sweep: &Sweep, threads: usize) -> String {
         .build()
         .expect("pool");
     let runs: Vec<CaseRun> = pool.install(|| {
-        run_cases(&sweep.cases, &Params::at_level(4), None, &|_| {}, &|_| {}).expect("runs")
+        run_cases(&sweep.cases, &Params::at_level(5), None, &|_| {}, &|_| {}).expect("runs")
     });
     runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", |r| {
         r.record()

@@ -3,4 +3,6 @@
 mod check;
 mod cli;
 mod point_contact;
+mod predict;
 mod text;
+mod traction;

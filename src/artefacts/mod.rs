@@ -3,9 +3,11 @@
 
 pub mod cache;
 pub mod csv;
+pub mod fig8;
 pub mod figures;
 pub mod fit;
 pub mod html;
+pub mod measured;
 pub mod plot;
 pub mod run;
 pub mod snapshot;

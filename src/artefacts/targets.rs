@@ -55,6 +55,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig5", description: "Sliding mu-bar vs tau_c, traction fluid, Table 2 grid (243 cases)", kind: Kind::Computed },
     Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed },
     Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2 and 1/5 at the Table 3 cases", kind: Kind::Computed },
+    Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table },
 ];
 
 /// Looks a target up.
@@ -145,7 +146,7 @@ pub fn summary_csv(built: &[Built]) -> String {
     table(&header, &rows)
 }
 
-fn write(ctx: &Context, name: &str, text: &str) -> Result<String, String> {
+pub(crate) fn write(ctx: &Context, name: &str, text: &str) -> Result<String, String> {
     let path = ctx.out.join(name);
     write_atomic(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     Ok(name.to_string())
@@ -166,6 +167,7 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "table2" => table2(ctx)?,
         "table3" => table3(ctx)?,
         "table4" => table4(ctx)?,
+        "fig8" => super::fig8::build(ctx)?,
         figure_name => figure(figure_name, ctx)?,
     };
     built.seconds = start.elapsed().as_secs_f64();

@@ -4,7 +4,7 @@
 
 use super::density::{Density, DensityLaw};
 use super::hertz::Hertz;
-use super::lubricant::{LubricantError, LubricantTable};
+use super::lubricant::{LubricantError, LubricantState, LubricantTable};
 use super::rheology::Rheology;
 use super::viscosity::{Viscosity, ViscosityLaw};
 use serde::{Deserialize, Serialize};
@@ -50,6 +50,26 @@ pub enum LubricantSpec {
         /// Ambient viscosity, Pa s.
         eta0_pa_s: f64,
     },
+}
+
+impl LubricantSpec {
+    /// `alpha` and `eta0` in SI units: looked up in the table at the temperature, or checked
+    /// (positive, finite) when given.
+    pub fn resolve(&self, lubs: &LubricantTable) -> Result<LubricantState, CaseError> {
+        match self {
+            LubricantSpec::Named {
+                lubricant,
+                temperature_c,
+            } => Ok(lubs.state(lubricant, *temperature_c)?),
+            LubricantSpec::Given {
+                alpha_per_pa,
+                eta0_pa_s,
+            } => Ok(LubricantState {
+                alpha_per_pa: positive("alpha", *alpha_per_pa)?,
+                eta0_pa_s: positive("eta0", *eta0_pa_s)?,
+            }),
+        }
+    }
 }
 
 /// A contact given by its physical operating conditions (SI units).
@@ -241,22 +261,8 @@ impl Problem {
         physics: Physics,
         lubs: &LubricantTable,
     ) -> Result<Self, CaseError> {
-        let (alpha, eta0) = match &p.lubricant {
-            LubricantSpec::Named {
-                lubricant,
-                temperature_c,
-            } => {
-                let s = lubs.state(lubricant, *temperature_c)?;
-                (s.alpha_per_pa, s.eta0_pa_s)
-            }
-            LubricantSpec::Given {
-                alpha_per_pa,
-                eta0_pa_s,
-            } => (
-                positive("alpha", *alpha_per_pa)?,
-                positive("eta0", *eta0_pa_s)?,
-            ),
-        };
+        let state = p.lubricant.resolve(lubs)?;
+        let (alpha, eta0) = (state.alpha_per_pa, state.eta0_pa_s);
         let ph = positive("ph", p.ph_pa)?;
         let um = positive("um", p.um_m_s)?;
         let slip = slip_in_range("slip", p.slip)?;

@@ -8,4 +8,5 @@ pub mod hertz;
 pub mod line_contact;
 pub mod lubricant;
 pub mod rheology;
+pub mod traction;
 pub mod viscosity;

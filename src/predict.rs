@@ -1,0 +1,266 @@
+//! `repro predict`: the friction of a user's contact from the mastercurve, the "simple tool
+//! for engineering use" of the Conclusions. The contact is given physically; Sec. IV's
+//! transform ([`repro::physics::traction::characteristic`]) gives `tau_c` (Eq. 12), Eq. (14)
+//! gives `mu-bar = asinh(tau_c / 5)` and Eq. (8) `mu = mu-bar tau0 / p_H`. With `--solve` the
+//! full EHL solve of the same contact (the physics of Figs. 4-7) is printed beside it.
+
+use crate::cli::{check_level, lubricant_spec, physics, DensityArg, ViscosityArg};
+use crate::report::{flag_error, progress_printer, summary_json};
+use anyhow::{bail, Result};
+use clap::Args;
+use repro::artefacts::fit::{mastercurve, PAPER_C};
+use repro::artefacts::targets::FIT_TAU_C_MIN;
+use repro::physics::case::{Case, PhysicalCase, Physics, Problem, Spec};
+use repro::physics::lubricant::LubricantTable;
+use repro::physics::traction::{
+    characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
+    ViscosityAtPh, ISOTHERMAL_SLIP_MAX,
+};
+use repro::solver::point::{solve as solve_point, Params, PointSolution};
+use serde_json::json;
+use std::time::Instant;
+
+/// Flags of `repro predict`.
+#[derive(Debug, Args)]
+#[command(allow_negative_numbers = true)]
+pub struct PredictArgs {
+    /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
+    #[arg(long, help_heading = "Lubricant")]
+    pub lubricant: Option<String>,
+    /// Temperature, C (with --lubricant).
+    #[arg(long, help_heading = "Lubricant")]
+    pub temperature: Option<f64>,
+    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant).
+    #[arg(long, help_heading = "Lubricant")]
+    pub alpha: Option<f64>,
+    /// Ambient viscosity eta0, Pa s (with --alpha).
+    #[arg(long, help_heading = "Lubricant")]
+    pub eta0: Option<f64>,
+    /// Viscosity-pressure law of eta(p_H) in tau_c (default roelands, as in Figs. 4-7).
+    #[arg(long, value_enum, help_heading = "Lubricant")]
+    pub viscosity: Option<ViscosityArg>,
+
+    /// Maximum Hertzian pressure p_H, Pa (or --load).
+    #[arg(long, help_heading = "Contact")]
+    pub ph: Option<f64>,
+    /// Normal load f, N (or --ph).
+    #[arg(long, help_heading = "Contact")]
+    pub load: Option<f64>,
+    /// Reduced radius in the rolling direction Rx, m.
+    #[arg(long, default_value_t = 1.03875e-2, help_heading = "Contact")]
+    pub rx: f64,
+    /// Reduced radius across the rolling direction Ry, m (default: Rx, a circular contact).
+    #[arg(long, help_heading = "Contact")]
+    pub ry: Option<f64>,
+    /// Reduced modulus E', Pa.
+    #[arg(long = "e-prime", default_value_t = 226e9, help_heading = "Contact")]
+    pub e_prime: f64,
+    /// Mean velocity u_m = (u1 + u2)/2, m/s.
+    #[arg(long, help_heading = "Contact")]
+    pub um: f64,
+    /// Slide-to-roll ratio S = 2 (u2 - u1)/(u2 + u1), in [0, 2].
+    #[arg(long, help_heading = "Contact")]
+    pub slip: f64,
+    /// Eyring stress tau0, Pa.
+    #[arg(long, help_heading = "Contact")]
+    pub tau0: f64,
+
+    /// Also run the full EHL solve (Roelands, Dowson-Higginson, Eyring) and print the
+    /// difference.
+    #[arg(long, help_heading = "Solve")]
+    pub solve: bool,
+    /// Grid level of --solve: 2^(level+1) points per direction (7 is the paper's 256 x 256).
+    #[arg(long, default_value_t = 7, help_heading = "Solve")]
+    pub level: u32,
+    /// Density-pressure law of --solve (default dowson-higginson).
+    #[arg(long, value_enum, help_heading = "Solve")]
+    pub density: Option<DensityArg>,
+
+    /// Print one JSON object instead of the summary.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    /// No per-cycle progress of --solve on stderr.
+    #[arg(long, short, help_heading = "Output")]
+    pub quiet: bool,
+}
+
+/// What the paper says about where Eq. (14) does not hold, for this case.
+fn warnings(c: &Characteristic) -> Vec<String> {
+    let mut w = Vec::new();
+    if c.tau_c < FIT_TAU_C_MIN {
+        w.push(format!(
+            "tau_c = {:.3e} is below {FIT_TAU_C_MIN}: at low tau_c the paper finds friction straying from the mastercurve because rolling friction dominates (Sec. III A, Figs. 2-3); Eq. (14) gives the sliding friction only",
+            c.tau_c
+        ));
+    }
+    if c.slip > ISOTHERMAL_SLIP_MAX {
+        w.push(format!(
+            "S = {} is above {ISOTHERMAL_SLIP_MAX}, the largest slip of the paper's isothermal runs (Table 2, Sec. III B): with significant sliding, shear heating makes Eq. (14) predict too large a friction (Conclusions)",
+            c.slip
+        ));
+    }
+    w
+}
+
+/// `repro predict`: false when the --solve did not converge (after printing why).
+pub fn predict(args: &PredictArgs) -> Result<bool> {
+    let level = check_level("--level", args.level)?;
+    let lubricant = lubricant_spec(
+        args.lubricant.as_deref(),
+        args.temperature,
+        args.alpha,
+        args.eta0,
+    )?;
+    let physics = physics(args.viscosity, args.density, None, Physics::figs_4_to_7());
+    let load = match (args.ph, args.load) {
+        (Some(ph), None) => Load::MaxPressure(ph),
+        (None, Some(f)) => Load::Force(f),
+        (Some(_), Some(_)) => bail!("--ph and --load cannot be mixed"),
+        (None, None) => bail!("--ph: required (or --load)"),
+    };
+    let (um, slip, tau0) = (args.um, args.slip, args.tau0);
+    let ry = args.ry.unwrap_or(args.rx);
+    let point = OperatingPoint {
+        contact: Contact::Elliptical {
+            rx_m: args.rx,
+            ry_m: ry,
+        },
+        e_prime_pa: args.e_prime,
+        load,
+        lubricant: lubricant.clone(),
+        speed: Speed::Mean(um),
+        sliding: Sliding::Slip(slip),
+        tau0_pa: tau0,
+        viscosity: ViscosityAtPh::Law(physics.viscosity),
+        film: FilmFormula::Eq10,
+    };
+    let lubs = LubricantTable::table1();
+
+    // The whole prediction: operating point -> tau_c -> mu-bar -> mu.
+    let start = Instant::now();
+    let c = characteristic(&point, &lubs).map_err(flag_error)?;
+    let mu_bar = mastercurve(c.tau_c, PAPER_C);
+    let mu = c.friction(mu_bar, tau0);
+    let compute_seconds = start.elapsed().as_secs_f64();
+
+    let warns = warnings(&c);
+    let solved = if args.solve {
+        let case = Case {
+            spec: Spec::Physical(PhysicalCase {
+                lubricant,
+                ph_pa: c.ph_pa,
+                um_m_s: um,
+                slip,
+                tau0_pa: tau0,
+                rx_m: args.rx,
+                ry_m: ry,
+                e_prime_pa: args.e_prime,
+            }),
+            physics,
+        };
+        let problem = Problem::from_case(&case, &lubs).map_err(flag_error)?;
+        let params = Params::at_level(level);
+        let mut printer = progress_printer(args.quiet || args.json);
+        match solve_point(&problem, &params, Some(&mut printer)) {
+            Ok(s) => Some((problem, s)),
+            Err(e) => {
+                eprintln!("solve failed: {e}");
+                eprintln!("residual history: {:?}", e.residual_history());
+                return Ok(false);
+            }
+        }
+    } else {
+        None
+    };
+
+    if args.json {
+        let solve = solved.as_ref().map(|(p, s)| {
+            let mut v = summary_json(p, &level, s, p.tau_c());
+            v["mu_sliding"] = json!(c.friction(s.friction.sliding, tau0));
+            v
+        });
+        let difference = solved.as_ref().map(|(_, s)| {
+            json!({
+                "mu_bar": mu_bar - s.friction.sliding,
+                "relative": mu_bar / s.friction.sliding - 1.0,
+            })
+        });
+        let out = json!({
+            "ph_pa": c.ph_pa, "m": c.m, "l": c.l, "s_bar": c.s_bar, "slip": c.slip,
+            "tau0_pa": tau0, "eta_bar_ph": c.eta_bar_ph, "hc_eq10": c.hc_moes, "hc_m": c.hc_m,
+            "tau_c": c.tau_c, "mu_bar": mu_bar, "mu": mu,
+            "compute_seconds": compute_seconds,
+            "warnings": warns,
+            "solve": solve,
+            "difference": difference,
+        });
+        println!("{}", serde_json::to_string_pretty(&out)?);
+    } else {
+        print!(
+            "{}",
+            text(
+                &c,
+                mu_bar,
+                mu,
+                compute_seconds,
+                tau0,
+                solved.as_ref().map(|(_, s)| s)
+            )
+        );
+        for w in &warns {
+            eprintln!("warning: {w}");
+        }
+    }
+    Ok(true)
+}
+
+fn text(
+    c: &Characteristic,
+    mu_bar: f64,
+    mu: f64,
+    compute_seconds: f64,
+    tau0: f64,
+    solved: Option<&PointSolution>,
+) -> String {
+    let mut out = format!(
+        "contact     p_H = {:.4e} Pa, M = {:.4}, L = {:.4}, S-bar = {:.4e}, S = {}\n\
+         tau_c       {:.4e}  (Eq. 12: eta(p_H)/eta0 = {:.4e}, Hc of Eq. 10 = {:.4} = {:.4e} m)\n\
+         mastercurve mu-bar = asinh(tau_c/5) = {:.4}  (Eq. 14, sliding friction)\n\
+         friction    mu = mu-bar tau0 / p_H = {:.5}\n\
+         compute     {:.1} us\n",
+        c.ph_pa,
+        c.m,
+        c.l,
+        c.s_bar,
+        c.slip,
+        c.tau_c,
+        c.eta_bar_ph,
+        c.hc_moes,
+        c.hc_m,
+        mu_bar,
+        mu,
+        compute_seconds * 1e6,
+    );
+    if let Some(s) = solved {
+        let solve_mu = c.friction(s.friction.sliding, tau0);
+        out.push_str(&format!(
+            "solve       {} x {}: mu-bar sliding = {:.4} (mu = {:.5}), rolling = {}, Hc = {:.4} (Moes), {} cycles, {:.2} s\n\
+             difference  mastercurve - solve: mu-bar {:+.4} ({:+.2} %), mu {:+.5}\n",
+            s.grid.nx,
+            s.grid.ny,
+            s.friction.sliding,
+            solve_mu,
+            s.friction
+                .rolling
+                .map(|r| format!("{r:.4}"))
+                .unwrap_or_else(|| "not computed".into()),
+            s.film.hc_moes,
+            s.info.cycles,
+            s.info.seconds,
+            mu_bar - s.friction.sliding,
+            100.0 * (mu_bar / s.friction.sliding - 1.0),
+            mu - solve_mu,
+        ));
+    }
+    out
+}
