@@ -3,7 +3,7 @@
 //! by the case's defining parameter so that the collapse (or not) is visible.
 
 use super::fit::PAPER_C;
-use super::plot::{mastercurve, render_svg, Curve, Figure, Marker, Scale, Series};
+use super::plot::{mastercurve, render_svg, Figure, Marker, Scale, Series};
 use super::run::CaseRun;
 use crate::physics::case::{LubricantSpec, Spec};
 
@@ -83,10 +83,7 @@ pub fn svg(
     let curves = if severity || xs.is_empty() {
         Vec::new()
     } else {
-        vec![Curve {
-            label: "Eq. (13): asinh(τc/5)".into(),
-            ..mastercurve(x_min, x_max, PAPER_C, 200)
-        }]
+        vec![mastercurve(x_min, x_max, PAPER_C, 200)]
     };
     let y_label = if total {
         "total reduced friction μ̄"
@@ -94,13 +91,13 @@ pub fn svg(
         "sliding reduced friction μ̄"
     };
     let x_label = if severity {
-        "S̄^(1/4) M L³"
+        "S̄^{1/4} M L^{3}"
     } else {
-        "characteristic shear stress τ̄c"
+        "characteristic shear stress τ̄_{c}"
     };
     let note = (failed > 0).then(|| {
         format!(
-            "{failed} of {} cases did not converge and are not shown",
+            "{failed} of {} cases failed (not converged or film collapse); not shown",
             runs.len()
         )
     });
