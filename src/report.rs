@@ -217,6 +217,9 @@ pub(crate) fn summary_line(b: &Built) -> String {
             100.0 * f.rms_rel_dev
         ));
     }
+    if b.name == "fig1" {
+        line.push_str(&format!(" ({})", b.ours));
+    }
     line.push_str(&format!(" -> {}", b.files.join(", ")));
     line
 }

@@ -82,6 +82,54 @@ pub fn fit(points: &[(f64, f64)]) -> Option<Fit> {
     })
 }
 
+/// How far a set of points is from lying on one curve when ordered by `x`: the mean squared
+/// difference of `y` between neighbours in `x`, over the variance of `y` (0 on a smooth
+/// monotone curve sampled densely, about 2 for points in random order).
+pub fn scatter(points: &mut [(f64, f64)]) -> f64 {
+    if points.len() < 3 {
+        return f64::NAN;
+    }
+    points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let n = points.len() as f64;
+    let mean = points.iter().map(|p| p.1).sum::<f64>() / n;
+    let var = points.iter().map(|p| (p.1 - mean).powi(2)).sum::<f64>() / n;
+    let jumps = points
+        .windows(2)
+        .map(|w| (w[1].1 - w[0].1).powi(2))
+        .sum::<f64>()
+        / (n - 1.0);
+    jumps / var
+}
+
+/// The exponents `(a, c)` of the severity `S-bar^a M L^c` (Fig. 1, the M exponent fixed at 1:
+/// only ratios matter for ordering) that collapse `(s_bar, m, l, mu)` best by [`scatter`],
+/// searched on a grid of steps 0.05 in `a` (0..1) and 0.1 in `c` (0..6), with the scatter
+/// reached.
+pub fn severity_exponents(cases: &[(f64, f64, f64, f64)]) -> Option<(f64, f64, f64)> {
+    if cases.len() < 3 {
+        return None;
+    }
+    let mut best: Option<(f64, f64, f64)> = None;
+    let mut points = Vec::with_capacity(cases.len());
+    for ia in 0..=20 {
+        let a = 0.05 * f64::from(ia);
+        for ic in 0..=60 {
+            let c = 0.1 * f64::from(ic);
+            points.clear();
+            points.extend(
+                cases
+                    .iter()
+                    .map(|&(s, m, l, mu)| (a * s.ln() + m.ln() + c * l.ln(), mu)),
+            );
+            let sc = scatter(&mut points);
+            if best.is_none_or(|b| sc < b.2) {
+                best = Some((a, c, sc));
+            }
+        }
+    }
+    best
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -108,5 +156,30 @@ mod tests {
     fn skips_unusable_points() {
         assert!(fit(&[(0.0, 1.0), (f64::NAN, 2.0)]).is_none());
         assert_eq!(fit(&[(1.0, 0.2), (-1.0, 0.1)]).unwrap().points, 1);
+    }
+
+    #[test]
+    fn severity_exponents_recover_a_planted_collapse() {
+        // mu = ln(S^0.25 M L^3) exactly: the search must find a = 0.25, c = 3 with zero scatter.
+        let mut cases = Vec::new();
+        for s in [0.01, 0.03, 0.1, 0.3, 1.0] {
+            for m in [50.0, 100.0, 200.0, 500.0, 1000.0] {
+                for l in [1.0, 2.0, 5.0, 10.0, 15.0] {
+                    let x: f64 = 0.25 * f64::ln(s) + f64::ln(m) + 3.0 * f64::ln(l);
+                    cases.push((s, m, l, x));
+                }
+            }
+        }
+        let (a, c, sc) = severity_exponents(&cases).unwrap();
+        assert!(
+            (a - 0.25).abs() < 1e-9 && (c - 3.0).abs() < 1e-9,
+            "a {a} c {c}"
+        );
+        // A densely sampled monotone curve leaves only the spacing of neighbours: small.
+        assert!(sc < 0.05, "{sc}");
+        let mut shuffled: Vec<(f64, f64)> = (0..50)
+            .map(|i| (f64::from(i), f64::from((i * 37) % 50)))
+            .collect();
+        assert!(scatter(&mut shuffled) > 1.0, "random order scatters");
     }
 }

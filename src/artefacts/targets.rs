@@ -624,10 +624,37 @@ fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
         "fig2" => "total mu-bar follows Eq. (13), c = 5, except a cluster at low tau_c where rolling friction dominates",
         _ => "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)",
     };
-    let mut built = sweep_figure(name, &sweep, &spec, ctx)?;
+    let (mut built, runs) = sweep_figure(name, &sweep, &spec, ctx)?;
     built.name = name;
     built.paper_claim = claim.to_string();
+    if spec.severity {
+        built.ours.push_str(&severity_summary(&runs));
+    }
     Ok(built)
+}
+
+/// Fig. 1's collapse: the scatter of total `mu-bar` ordered by the paper's `S-bar^(1/4) M L^3`
+/// against the exponents of `S-bar^a M L^c` that collapse our points best.
+fn severity_summary(runs: &[CaseRun]) -> String {
+    let cases: Vec<(f64, f64, f64, f64)> = runs
+        .iter()
+        .filter_map(|r| {
+            let g = &r.problem.groups;
+            r.record()
+                .map(|rec| (g.s_bar, g.m, g.l, rec.mu_bar_total()))
+        })
+        .collect();
+    let mut paper: Vec<(f64, f64)> = cases
+        .iter()
+        .map(|&(s, m, l, mu)| (0.25 * s.ln() + m.ln() + 3.0 * l.ln(), mu))
+        .collect();
+    let paper_scatter = super::fit::scatter(&mut paper);
+    match super::fit::severity_exponents(&cases) {
+        Some((a, c, best)) => format!(
+            "; scatter about one curve (0 = a curve, 2 = random) {paper_scatter:.3} with the paper's S-bar^(1/4) M L^3, {best:.3} with the best exponents S-bar^{a:.2} M L^{c:.1}"
+        ),
+        None => String::new(),
+    }
 }
 
 /// A user's own sweep (`repro run`), drawn and fitted as Figs. 3-7: sliding `mu-bar` against
@@ -638,7 +665,7 @@ pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<Built, String> 
         total: false,
         severity: false,
     };
-    let mut built = sweep_figure(stem, sweep, &spec, ctx)?;
+    let (mut built, _) = sweep_figure(stem, sweep, &spec, ctx)?;
     built.paper_claim = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)".into();
     Ok(built)
 }
@@ -649,7 +676,7 @@ fn sweep_figure(
     sweep: &Sweep,
     spec: &FigureSpec,
     ctx: &Context,
-) -> Result<Built, String> {
+) -> Result<(Built, Vec<CaseRun>), String> {
     let (runs, level) = run_sweep(stem, sweep, ctx)?;
     for (i, r) in runs.iter().enumerate() {
         if let Outcome::Failed { error, .. } = &r.outcome {
@@ -714,7 +741,7 @@ fn sweep_figure(
         ),
         None => format!("{solved} of {} cases solved", runs.len()),
     };
-    Ok(Built {
+    let built = Built {
         name: "study",
         title: sweep.title.clone(),
         cases: runs.len(),
@@ -727,7 +754,8 @@ fn sweep_figure(
         files,
         paper_claim: String::new(),
         ours,
-    })
+    };
+    Ok((built, runs))
 }
 
 /// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
