@@ -5,6 +5,7 @@ pub mod cache;
 pub mod csv;
 pub mod figures;
 pub mod fit;
+pub mod line_cases;
 pub mod plot;
 pub mod run;
 pub mod sweep;
