@@ -125,9 +125,9 @@ pub struct SolveArgs {
     /// Dimensionless slip S-bar, Eq. (9); 0 is pure rolling.
     #[arg(long = "s-bar", help_heading = "Dimensionless form")]
     pub s_bar: Option<f64>,
-    /// Ellipticity ratio D = Rx/Ry in (0, 1].
-    #[arg(long, default_value_t = 1.0, help_heading = "Dimensionless form")]
-    pub d: f64,
+    /// Ellipticity ratio D = Rx/Ry in (0, 1] (default 1; not with --line).
+    #[arg(long, help_heading = "Dimensionless form")]
+    pub d: Option<f64>,
 
     // Physical form.
     /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
@@ -181,10 +181,16 @@ pub struct SolveArgs {
     #[arg(long, value_enum)]
     pub rheology: Option<RheologyArg>,
 
+    /// Solve a line contact (1-D solver, Fig. 7) with the same flags; --ry and --d do not
+    /// apply. The load is given by --ph (physical form) or by the line-contact M.
+    #[arg(long)]
+    pub line: bool,
+
     // Numerics and output.
-    /// Grid level: 2^(level+1) points per direction (7 is the paper's 256 x 256).
-    #[arg(long, default_value_t = 7, help_heading = "Numerics")]
-    pub level: u32,
+    /// Grid level: 2^(level+1) points per direction (default 7, the paper's 256 x 256; with
+    /// --line default 8, 512 intervals).
+    #[arg(long, help_heading = "Numerics")]
+    pub level: Option<u32>,
     /// Computational domain.
     #[arg(long, value_enum, default_value = "paper", help_heading = "Numerics")]
     pub domain: DomainArg,
@@ -244,7 +250,7 @@ impl SolveArgs {
                 m: need(self.m, "--m")?,
                 l: need(self.l, "--l")?,
                 s_bar: need(self.s_bar, "--s-bar")?,
-                d: self.d,
+                d: self.d.unwrap_or(1.0),
                 slip: self.slip.unwrap_or(0.01),
                 eta0_pa_s: self.eta0,
                 ph_pa: self.ph,
@@ -299,7 +305,7 @@ impl SolveArgs {
     /// Solver parameters from the numerics flags.
     pub fn params(&self) -> Result<Params> {
         Ok(Params {
-            level: check_level("--level", self.level)?,
+            level: check_level("--level", self.level.unwrap_or(7))?,
             domain: match self.domain {
                 DomainArg::Paper => Domain::default(),
                 DomainArg::Wide => Domain::wide(),

@@ -2,6 +2,7 @@
 
 mod cli;
 mod report;
+mod solve_line;
 
 use clap::Parser;
 use cli::{Cli, Command};

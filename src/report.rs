@@ -25,7 +25,7 @@ fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
 }
 
 /// Prefixes a case error with the flag it names.
-fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
+pub(crate) fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
     use repro::physics::case::CaseError;
     use repro::physics::lubricant::LubricantError;
     match e {
@@ -42,6 +42,9 @@ fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
 
 /// `repro solve`: returns false when the solve failed (after printing why).
 pub fn solve(args: &SolveArgs) -> Result<bool> {
+    if args.line {
+        return crate::solve_line::solve_line(args);
+    }
     let case = args.case()?;
     let params = args.params()?;
     let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
