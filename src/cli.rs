@@ -155,9 +155,9 @@ pub struct SolveArgs {
     /// Dimensionless slip S-bar, Eq. (9); 0 is pure rolling.
     #[arg(long = "s-bar", help_heading = "Dimensionless form")]
     pub s_bar: Option<f64>,
-    /// Ellipticity ratio D = Rx/Ry in (0, 1].
-    #[arg(long, default_value_t = 1.0, help_heading = "Dimensionless form")]
-    pub d: f64,
+    /// Ellipticity ratio D = Rx/Ry in (0, 1] (default 1; not with --line).
+    #[arg(long, help_heading = "Dimensionless form")]
+    pub d: Option<f64>,
 
     // Physical form.
     /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
@@ -211,10 +211,16 @@ pub struct SolveArgs {
     #[arg(long, value_enum)]
     pub rheology: Option<RheologyArg>,
 
+    /// Solve a line contact (1-D solver, Fig. 7) with the same flags; --ry and --d do not
+    /// apply. The load is given by --ph (physical form) or by the line-contact M.
+    #[arg(long)]
+    pub line: bool,
+
     // Numerics and output.
-    /// Grid level: 2^(level+1) points per direction (7 is the paper's 256 x 256).
-    #[arg(long, default_value_t = 7, help_heading = "Numerics")]
-    pub level: u32,
+    /// Grid level: 2^(level+1) points per direction (default 7, the paper's 256 x 256; with
+    /// --line default 8, 512 intervals).
+    #[arg(long, help_heading = "Numerics")]
+    pub level: Option<u32>,
     /// Computational domain.
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub domain: DomainArg,
@@ -323,7 +329,7 @@ impl SolveArgs {
                 m: need(self.m, "--m")?,
                 l: need(self.l, "--l")?,
                 s_bar: need(self.s_bar, "--s-bar")?,
-                d: self.d,
+                d: self.d.unwrap_or(1.0),
                 slip: self.slip.unwrap_or(0.01),
                 eta0_pa_s: self.eta0,
                 ph_pa: self.ph,
@@ -353,7 +359,7 @@ impl SolveArgs {
     /// Solver parameters from the numerics flags, for a contact of Moes load `m`.
     pub fn params(&self, m: f64) -> Result<Params> {
         Ok(Params {
-            level: check_level("--level", self.level)?,
+            level: check_level("--level", self.level.unwrap_or(7))?,
             domain: match self.domain {
                 DomainArg::Auto => Domain::for_load(m),
                 DomainArg::Paper => Domain::default(),

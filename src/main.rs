@@ -4,6 +4,7 @@ mod check;
 mod cli;
 mod predict;
 mod report;
+mod solve_line;
 
 use clap::Parser;
 use cli::{Cli, Command};

@@ -42,6 +42,9 @@ pub(crate) fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
 
 /// `repro solve`: returns false when the solve failed (after printing why).
 pub fn solve(args: &SolveArgs) -> Result<bool> {
+    if args.line {
+        return crate::solve_line::solve_line(args);
+    }
     let case = args.case()?;
     let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
     let params = args.params(problem.groups.m)?;

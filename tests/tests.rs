@@ -2,6 +2,7 @@
 
 mod check;
 mod cli;
+mod line_contact;
 mod point_contact;
 mod predict;
 mod text;

@@ -7,6 +7,7 @@ pub mod fig8;
 pub mod figures;
 pub mod fit;
 pub mod html;
+pub mod line_cases;
 pub mod measured;
 pub mod plot;
 pub mod run;

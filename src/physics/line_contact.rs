@@ -10,8 +10,9 @@
 //! `H = h Rx / a^2` (the 1-D analogue of the paper's `H = h/c`), so that the film equation is
 //! `H = H0 + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
 
-use super::case::{CaseError, Physics};
+use super::case::{CaseError, LubricantSpec, PhysicalCase, Physics};
 use super::density::{Density, DensityLaw};
+use super::lubricant::LubricantTable;
 use super::rheology::Rheology;
 use super::viscosity::{Viscosity, ViscosityLaw};
 use serde::{Deserialize, Serialize};
@@ -298,6 +299,41 @@ pub struct LinePhysicalCase {
     pub rx_m: f64,
     /// Reduced modulus `E'`, Pa.
     pub e_prime_pa: f64,
+}
+
+impl LinePhysicalCase {
+    /// The line contact of a point-contact case's operating conditions (its `Ry` dropped):
+    /// how the Table 3 rows of `cases/fig7.toml` become the line contacts of Fig. 7.
+    pub fn from_point_case(
+        c: &PhysicalCase,
+        lubricants: &LubricantTable,
+    ) -> Result<Self, CaseError> {
+        let (alpha_per_pa, eta0_pa_s) = match &c.lubricant {
+            LubricantSpec::Named {
+                lubricant,
+                temperature_c,
+            } => {
+                let s = lubricants
+                    .state(lubricant, *temperature_c)
+                    .map_err(|e| field("lubricant", e.to_string()))?;
+                (s.alpha_per_pa, s.eta0_pa_s)
+            }
+            LubricantSpec::Given {
+                alpha_per_pa,
+                eta0_pa_s,
+            } => (*alpha_per_pa, *eta0_pa_s),
+        };
+        Ok(LinePhysicalCase {
+            alpha_per_pa,
+            eta0_pa_s,
+            ph_pa: c.ph_pa,
+            um_m_s: c.um_m_s,
+            slip: c.slip,
+            tau0_pa: c.tau0_pa,
+            rx_m: c.rx_m,
+            e_prime_pa: c.e_prime_pa,
+        })
+    }
 }
 
 /// A line contact given by its Moes groups.

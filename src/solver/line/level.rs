@@ -71,18 +71,12 @@ pub(crate) struct Level {
     pub deformation: Deformation,
     /// Pressure `P`.
     pub p: Vec<f64>,
-    /// Right-hand side of the Reynolds equation (zero on the finest level; FAS on coarser).
-    pub f: Vec<f64>,
-    /// Film `H = H0 + hrhs + W`.
+    /// Film `H = H0 + X^2/2 + W`.
     pub h: Vec<f64>,
-    /// The film equation's right-hand side: `X^2/2` on the finest level, FAS on coarser.
+    /// The undeformed gap `X^2/2`.
     pub hrhs: Vec<f64>,
     /// Elastic deformation `W`.
     pub w: Vec<f64>,
-    /// The coarse-grid pressure as restricted, before the coarse cycle (for the correction).
-    pub pold: Vec<f64>,
-    /// Right-hand side of the force balance: `sum P h + rg = 0`.
-    pub rg: f64,
     /// `rho H^3 / (eta_eff lambda)` at the nodes.
     pub eps: Vec<f64>,
     /// `rho` at the nodes (all ones and never touched when incompressible).
@@ -109,12 +103,9 @@ impl Level {
             dx,
             deformation: Deformation::new(dx, n),
             p: vec![0.0; n + 1],
-            f: vec![0.0; n + 1],
             h: vec![0.0; n + 1],
             hrhs,
             w: vec![0.0; n + 1],
-            pold: vec![0.0; n + 1],
-            rg: -LOAD,
             eps: vec![0.0; n + 1],
             rho: vec![1.0; n + 1],
             rh: vec![0.0; n + 1],
@@ -130,14 +121,6 @@ impl Level {
     /// The node nearest to `x`.
     pub fn nearest(&self, x: f64) -> usize {
         ((x - self.x0) / self.dx).round().clamp(0.0, self.n as f64) as usize
-    }
-
-    /// Resets the film right-hand side to the geometry `X^2/2` (a level's own equations).
-    pub fn reset_geometry(&mut self) {
-        for i in 0..=self.n {
-            let x = self.x(i);
-            self.hrhs[i] = 0.5 * x * x;
-        }
     }
 
     /// Film equation: `H = H0 + hrhs + W(P)`.
@@ -215,10 +198,10 @@ impl Level {
         xw * (p[i - 1] - p[i]) + xe * (p[i + 1] - p[i]) - self.wedge(i)
     }
 
-    /// Residual `f - L(P)` at interior node `i`.
+    /// Residual `-L(P)` at interior node `i`.
     #[inline]
     pub fn residual(&self, i: usize) -> f64 {
-        self.f[i] - self.operator(&self.p, i)
+        -self.operator(&self.p, i)
     }
 
     /// Mean absolute residual over the pressurised interior nodes (film and coefficients
@@ -236,10 +219,5 @@ impl Level {
     /// `int P dX` by the rectangle rule (the end values are zero).
     pub fn load(&self) -> f64 {
         self.p.iter().sum::<f64>() * self.dx
-    }
-
-    /// Force-balance defect `sum P h + rg`.
-    pub fn load_defect(&self) -> f64 {
-        self.load() + self.rg
     }
 }

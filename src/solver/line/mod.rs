@@ -1,53 +1,51 @@
-//! The isothermal line contact with Eyring rheology (Fig. 7 of the paper), solved by
-//! full-approximation-scheme multigrid with a full-multigrid start from the Hertzian pressure,
-//! as Venner and Lubrecht ("Multilevel Methods in Lubrication", 2000) solve the line contact:
+//! The isothermal line contact with Eyring rheology (Fig. 7 of the paper; "a separate
+//! approach based on the equations presented in Ref. [11]", Conry, Wang and Cusano 1987):
 //!
 //! - dimensionless `X = x/a`, `P = p/p_H`, `H = h Rx / a^2`
 //!   ([`crate::physics::line_contact`]);
 //! - Reynolds `d/dX (eps dP/dX) - d(rho H)/dX = 0`, `eps = rho H^3 / (eta_eff lambda)`, with
 //!   second-order central Poiseuille terms and a second-order upstream wedge term; `P = 0` at
-//!   both ends; cavitation by `P = max(P, 0)`;
+//!   both ends; cavitation `P >= 0` as a complementarity condition ([`newton`]);
 //! - the Eyring flow in its exact 1-D form by default (effective viscosity
 //!   `eta / (cosh(tau_m) F(G))`, `sinh(tau_m) = x G / sinh G`,
-//!   [`crate::physics::line_contact::LineEyringFlow::Exact`]), or the perturbation form of the
-//!   point contact ([`crate::physics::line_contact::LineEyringFlow::Perturbation`]), selected
-//!   on the problem. The exact form is the default because in one dimension it costs nothing
-//!   more and removes the perturbation assumption; the two differ little where it matters for
-//!   friction (see the test `exact_and_perturbation_eyring_differ_little`: on the heavy
-//!   Table 3 case the sliding `mu-bar` moves by a fraction of a per cent);
+//!   [`crate::physics::line_contact::LineEyringFlow::Exact`]), or the perturbation form of
+//!   Eqs. (2)-(4) that the point contact uses
+//!   ([`crate::physics::line_contact::LineEyringFlow::Perturbation`]), selected on the
+//!   problem;
 //! - film `H = H0 + X^2/2 - (1/pi) int P ln|X - X'| dX'`, the pressure piecewise constant on
 //!   the cells, evaluated exactly on each grid (direct sum or zero-padded FFT, [`kernel`]);
-//! - relaxation switching between Gauss-Seidel and Jacobi distributive on `eps/h^2`, all
-//!   nodes' changes solved together in a band ([`relax`]);
-//! - force balance `int P dX = pi/2` relaxed on the coarsest grid through `H0`.
+//! - force balance `int P dX = pi/2` solved together with Reynolds, `H0` an unknown.
 //!
-//! Why multigrid rather than Newton: a damped Newton method with the dense elastic Jacobian is
-//! robust but costs `O(n^3)` per step, which rules out the level-12 grid (8193 nodes) the grid
-//! convergence study needs; FAS multigrid costs `O(n log n)` per cycle here and is the method
-//! the paper's authors use. The hard cases the tests solve (the 3 GPa Table 3 case with
-//! Roelands, Dowson-Higginson and Eyring) converge in a few tens of V-cycles.
+//! Method: damped semi-smooth Newton with the full (dense) Jacobian on each grid of a nested
+//! iteration: the Hertzian pressure on the start level, then each finer level starts from the
+//! cubic interpolation of the converged coarser solution. Why not FAS multigrid (which the
+//! paper's authors use): a FAS solver with Gauss-Seidel / Jacobi distributive relaxation was
+//! written first and stalled or blew up on every heavily loaded case we tried (and on some
+//! light Newtonian ones); Newton with the full Jacobian is the method of Houpert and Hamrock
+//! (1986), known to be robust up to several GPa. Its price is the dense `O(n^3)` factorisation:
+//! level 9 (1024 intervals) costs about a second, so the working level is 8 and level 11 is
+//! the finest that tests afford.
 //!
 //! The domain defaults to `-4.5 <= X <= 1.5` ([`LineDomain::default`]); level `n` has
 //! `2^(n+1)` intervals, so `X = 0` is a node of every level.
 
+mod dense;
 mod friction;
 mod kernel;
 mod level;
-mod multigrid;
-mod relax;
+mod newton;
 mod transfer;
 
-use crate::physics::line_contact::{LineFilmFormula, LineProblem};
+use crate::physics::line_contact::{LineFilmFormula, LineHertz, LineProblem};
 use crate::solver::output::{Film, Friction, Info, SolveError};
-use level::{Model, LOAD};
-use multigrid::Hierarchy;
+use level::{Level, Model, LOAD};
 use std::time::Instant;
 
-/// Highest level the solver accepts (32768 intervals).
-pub const MAX_LEVEL: u32 = 14;
+/// Highest level the solver accepts (8192 intervals: a dense Jacobian of 0.5 GB).
+pub const MAX_LEVEL: u32 = 12;
 /// Lowest level the solver accepts as the finest.
 pub const MIN_LEVEL: u32 = 3;
-/// Residual growth over the best cycle that stops the solve as diverged.
+/// Residual growth over the best iteration that stops the solve as diverged.
 const DIVERGENCE_FACTOR: f64 = 1e3;
 /// `1/4 + ln(2)/2`: the deformation plus `X^2/2` of the dry Hertzian pressure, flat inside
 /// the contact (so that `H(0) = H0 + 0.5966` for the Hertzian start).
@@ -77,36 +75,20 @@ impl Default for LineDomain {
 /// Solver parameters with documented defaults.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Params {
-    /// Finest level: `2^(level+1)` intervals. Default 10 (2048 intervals, `h = 0.0029`).
+    /// Finest level: `2^(level+1)` intervals. Default 8 (512 intervals, `h = 0.0117`).
     pub level: u32,
-    /// Coarsest level of the hierarchy (lowered to `level` if above it). Default 4
-    /// (32 intervals).
-    pub coarsest_level: u32,
+    /// Level of the nested iteration's Hertzian start (lowered to `level` if above it).
+    /// Default 6 (128 intervals).
+    pub start_level: u32,
     /// Computational domain.
     pub domain: LineDomain,
-    /// Relaxations before coarsening. Default 2.
-    pub pre_sweeps: usize,
-    /// Relaxations after the correction. Default 1.
-    pub post_sweeps: usize,
-    /// Relaxations on the coarsest grid per visit. Default 200.
-    pub coarsest_sweeps: usize,
-    /// Force-balance updates of `H0` per visit of the coarsest grid, evenly among its sweeps.
-    /// Default 20.
-    pub coarsest_force_updates: usize,
-    /// Gain of the force-balance update `H0 += gain * (int P - pi/2)`. Default 0.1.
-    pub force_balance_gain: f64,
-    /// Cycle index: 1 for V-cycles, 2 for W-cycles. Default 1.
-    pub gamma: usize,
-    /// Cycles on each intermediate level of the full-multigrid start. Default 2.
-    pub fmg_cycles: usize,
-    /// Most cycles on the finest level. Default 60.
-    pub max_cycles: usize,
-    /// Convergence: the mean absolute Reynolds residual on the finest level. Default 1e-8.
+    /// Most Newton iterations per level. Default 60.
+    pub max_iterations: usize,
+    /// Convergence: the mean absolute Reynolds residual on the finest level. Default 1e-9.
     pub tolerance: f64,
-    /// Convergence: relative force-balance error. Default 1e-5.
+    /// Convergence: relative force-balance error. Default 1e-8.
     pub load_tolerance: f64,
-    /// Compute the rolling (Poiseuille) part of the friction. Default false (Fig. 7 needs
-    /// only the sliding part).
+    /// Compute the rolling (Poiseuille) part of the friction. Default true.
     pub rolling_friction: bool,
     /// Fail with [`SolveError::FilmCollapse`] when the minimum film is not positive.
     /// Default true.
@@ -116,20 +98,13 @@ pub struct Params {
 impl Default for Params {
     fn default() -> Self {
         Params {
-            level: 10,
-            coarsest_level: 4,
+            level: 8,
+            start_level: 6,
             domain: LineDomain::default(),
-            pre_sweeps: 2,
-            post_sweeps: 1,
-            coarsest_sweeps: 200,
-            coarsest_force_updates: 20,
-            force_balance_gain: 0.1,
-            gamma: 1,
-            fmg_cycles: 2,
-            max_cycles: 60,
-            tolerance: 1e-8,
-            load_tolerance: 1e-5,
-            rolling_friction: false,
+            max_iterations: 60,
+            tolerance: 1e-9,
+            load_tolerance: 1e-8,
+            rolling_friction: true,
             require_positive_film: true,
         }
     }
@@ -145,18 +120,18 @@ impl Params {
     }
 }
 
-/// What the observer is told after each cycle.
+/// What the observer is told after each Newton iteration.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Progress {
     /// Level the cycle ran on.
     pub level: u32,
-    /// Cycle number on that level (from 1).
+    /// Iteration number on that level (from 1).
     pub cycle: usize,
-    /// Mean absolute residual after the cycle.
+    /// Mean absolute residual after the iteration.
     pub residual: f64,
-    /// Relative force-balance error after the cycle.
+    /// Relative force-balance error after the iteration.
     pub load_error: f64,
-    /// Central film `H` after the cycle.
+    /// Central film `H` after the iteration.
     pub h_central: f64,
 }
 
@@ -186,7 +161,9 @@ fn initial_h0(problem: &LineProblem) -> f64 {
     LineFilmFormula::Moes.hc(g.m, g.l) / g.moes_film_scale - HERTZ_APPROACH
 }
 
-/// Solves `problem` with `params`; `observer` (if any) hears of every cycle.
+/// Solves `problem` with `params`; `observer` (if any) hears of every Newton iteration on
+/// every level. Failure is a typed [`SolveError`] carrying the finest level's residual
+/// history (or the level that failed).
 pub fn solve(
     problem: &LineProblem,
     params: &Params,
@@ -199,10 +176,10 @@ pub fn solve(
             params.level
         )));
     }
-    if params.coarsest_level < 2 || params.gamma == 0 {
+    if params.start_level < MIN_LEVEL || params.max_iterations == 0 {
         return Err(SolveError::InvalidParams(format!(
-            "coarsest level {} must be at least 2, gamma {} positive",
-            params.coarsest_level, params.gamma
+            "start level {} must be at least {MIN_LEVEL}, max_iterations positive",
+            params.start_level
         )));
     }
     let d = params.domain;
@@ -212,83 +189,75 @@ pub fn solve(
             d.x_start, d.x_end
         )));
     }
-    let params = &Params {
-        coarsest_level: params.coarsest_level.min(params.level),
-        ..params.clone()
-    };
     let model = Model::new(problem);
-    let mut mg = Hierarchy::new(model, params, initial_h0(problem));
-    let top = mg.levels.len() - 1;
-
-    // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
-    // from the interpolated solution of the one below.
-    {
-        let l0 = &mut mg.levels[0];
-        for i in 0..=l0.n {
-            l0.p[i] = crate::physics::line_contact::LineHertz::pressure(l0.x(i));
-        }
+    let first = params.start_level.min(params.level);
+    let mut h0 = initial_h0(problem);
+    let mut level = Level::new(1usize << (first + 1), d.x_start, d.x_end);
+    for i in 0..=level.n {
+        level.p[i] = LineHertz::pressure(level.x(i));
     }
-    mg.make_top(0);
-    mg.cycle(0);
     let mut history = Vec::new();
-    for k in 1..=top {
-        mg.make_top(k);
-        mg.interpolate(k);
-        let cycles = if k == top {
-            params.max_cycles
-        } else {
-            params.fmg_cycles
-        };
-        for cycle in 1..=cycles {
-            mg.cycle(k);
-            let residual = mg.residual_norm(k);
-            let level = &mg.levels[k];
-            let load_error = (level.load_defect() / LOAD).abs();
-            if k == top {
-                history.push(residual);
-            }
+    for lv in first..=params.level {
+        if lv > first {
+            let mut fine = Level::new(1usize << (lv + 1), d.x_start, d.x_end);
+            transfer::interpolate_solution(&level, &mut fine);
+            level = fine;
+        }
+        let finest = lv == params.level;
+        let mut level_history = Vec::new();
+        let mut non_finite = false;
+        let mut diverged = false;
+        let mut report = |l: &Level, residual: f64, load_error: f64, _h0: f64| -> bool {
+            level_history.push(residual);
             if let Some(obs) = observer.as_mut() {
                 obs(&Progress {
-                    level: params.coarsest_level + k as u32,
-                    cycle,
+                    level: lv,
+                    cycle: level_history.len(),
                     residual,
                     load_error,
-                    h_central: friction::film(level, 1.0).h_central,
+                    h_central: friction::film(l, 1.0).h_central,
                 });
             }
-            if !residual.is_finite() || !mg.h0.is_finite() || level.p.iter().any(|v| !v.is_finite())
-            {
-                return Err(SolveError::NonFinite {
-                    what: "pressure or residual",
-                    cycle,
-                    residual_history: history,
-                });
+            if !residual.is_finite() || l.p.iter().any(|v| !v.is_finite()) {
+                non_finite = true;
+                return false;
             }
-            // A residual a thousand times above the best one seen is divergence, not noise.
-            let best = history.iter().cloned().fold(f64::INFINITY, f64::min);
-            if k == top && residual > DIVERGENCE_FACTOR * best {
-                return Err(SolveError::NotConverged {
-                    cycles: cycle,
-                    tolerance: params.tolerance,
-                    residual_history: history,
-                });
+            let best = level_history.iter().cloned().fold(f64::INFINITY, f64::min);
+            if residual > DIVERGENCE_FACTOR * best {
+                diverged = true;
+                return false;
             }
-            if k == top && residual < params.tolerance && load_error < params.load_tolerance {
-                break;
-            }
+            true
+        };
+        let outcome = newton::iterate(
+            &mut level,
+            &model,
+            &mut h0,
+            params.max_iterations,
+            params.tolerance,
+            params.load_tolerance,
+            &mut report,
+        );
+        history = level_history;
+        if non_finite || !h0.is_finite() {
+            return Err(SolveError::NonFinite {
+                what: "pressure or residual",
+                cycle: outcome.iterations,
+                residual_history: history,
+            });
         }
+        if !outcome.converged || diverged {
+            return Err(SolveError::NotConverged {
+                cycles: outcome.iterations,
+                tolerance: params.tolerance,
+                residual_history: history,
+            });
+        }
+        let _ = finest;
     }
-    let fine = mg.finest();
-    let load_error = (fine.load_defect() / LOAD).abs();
-    let residual = history.last().copied().unwrap_or(f64::INFINITY);
+    let fine = &level;
+    let load_error = ((fine.load() - LOAD) / LOAD).abs();
     let cycles = history.len();
-    if !(residual < params.tolerance && load_error < params.load_tolerance) {
-        return Err(SolveError::NotConverged {
-            cycles,
-            tolerance: params.tolerance,
-            residual_history: history,
-        });
-    }
     let film = friction::film(fine, problem.groups.moes_film_scale);
     if params.require_positive_film && film.h_min <= 0.0 {
         return Err(SolveError::FilmCollapse {
@@ -297,7 +266,7 @@ pub fn solve(
             residual_history: history,
         });
     }
-    let friction = friction::friction(fine, &mg.model, params.rolling_friction);
+    let friction = friction::friction(fine, &model, params.rolling_friction);
     if !friction.sliding.is_finite() || !friction.total().is_finite() {
         return Err(SolveError::NonFinite {
             what: "friction",
@@ -309,7 +278,7 @@ pub fn solve(
         x: (0..=fine.n).map(|i| fine.x(i)).collect(),
         p: fine.p.clone(),
         h: fine.h.clone(),
-        h0: mg.h0,
+        h0,
         film,
         friction,
         info: Info {

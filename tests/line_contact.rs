@@ -1,0 +1,175 @@
+//! The line-contact solver through the library API and the CLI: the Table 3 line cases of
+//! Fig. 7, the point-contact trend in Rx/Ry, and `repro solve --line`.
+
+use repro::artefacts::line_cases::table3_line_cases;
+use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::physics::line_contact::LineProblem;
+use repro::physics::lubricant::LubricantTable;
+use repro::solver::line;
+use repro::solver::point;
+use std::process::Command;
+
+#[test]
+fn table3_line_cases_converge_near_eq13() {
+    // All five Table 3 cases as line contacts at the working level (8): sound solutions, and
+    // sliding mu-bar near Eq. (13) at the tau_c of the Moes line film. Measured deviations
+    // -6.0, -4.6, -3.7, -1.1, -1.2 %; the paper's Fig. 7 shows its line points on the curve to
+    // within the scatter of Figs. 4-6 (a few per cent). 7 % leaves room for the level-8
+    // discretisation error (~0.2 %) and fails on a wrong tau_c unit (an order of magnitude).
+    let (cases, physics) = table3_line_cases().unwrap();
+    for (k, c) in cases.iter().enumerate() {
+        let pr = LineProblem::from_physical(c, physics).unwrap();
+        let s = line::solve(&pr, &line::Params::default(), None)
+            .unwrap_or_else(|e| panic!("case {}: {e}", k + 1));
+        assert!(s.p.iter().all(|v| *v >= 0.0) && s.h.iter().all(|v| *v > 0.0));
+        let eq13 = (pr.tau_c() / 5.0).asinh();
+        let dev = s.friction.sliding / eq13 - 1.0;
+        assert!(
+            dev.abs() < 0.07,
+            "case {}: mu {} vs Eq. 13 {eq13}",
+            k + 1,
+            s.friction.sliding
+        );
+    }
+}
+
+fn point_case(d: f64) -> Case {
+    // Table 3, third row: mineral oil A, 2 GPa, 40 C, 7 m/s, S = 0.1 %, tau0 = 8 MPa.
+    let rx = 1.03875e-2;
+    Case {
+        spec: Spec::Physical(PhysicalCase {
+            lubricant: LubricantSpec::Named {
+                lubricant: "mineral-oil-a".into(),
+                temperature_c: 40.0,
+            },
+            ph_pa: 2e9,
+            um_m_s: 7.0,
+            slip: 0.001,
+            tau0_pa: 8e6,
+            rx_m: rx,
+            ry_m: rx / d,
+            e_prime_pa: 226e9,
+        }),
+        physics: Physics::figs_4_to_7(),
+    }
+}
+
+#[test]
+fn elliptical_friction_trend_in_rx_over_ry_and_the_line_value() {
+    // Sliding mu-bar of elliptical contacts with Rx/Ry = 1, 1/2, 1/5, 1/10 at one Table 3
+    // case (level 5, ~1 s each) changes monotonically with Rx/Ry. It does NOT move toward the
+    // line-contact value: measured 22.18, 22.08, 22.02, 21.99 against the line 22.92. At a
+    // fixed p_H the Hertzian pressure of every ellipse is P = sqrt(1 - X^2 - Y^2), so mu-bar
+    // is a 2-D average over the ellipse whatever D is, while the line contact averages over
+    // the 1-D semi-ellipse, which weights high pressures more (int P^2 / int P: 0.85 vs
+    // 0.75); only the film shape changes with D. LINE_NOTES.md gives the numbers. The test
+    // asserts the monotone trend and that all values stay within 5 % of the line value
+    // (measured 3.3-4.0 % below it).
+    let lubs = LubricantTable::table1();
+    let params = point::Params {
+        level: 5,
+        rolling_friction: false,
+        ..point::Params::default()
+    };
+    let mu: Vec<f64> = [1.0, 0.5, 0.2, 0.1]
+        .iter()
+        .map(|&d| {
+            let pr = Problem::from_case(&point_case(d), &lubs).unwrap();
+            point::solve(&pr, &params, None).unwrap().friction.sliding
+        })
+        .collect();
+    let (cases, physics) = table3_line_cases().unwrap();
+    let pr = LineProblem::from_physical(&cases[2], physics).unwrap();
+    let line_mu = line::solve(&pr, &line::Params::default(), None)
+        .unwrap()
+        .friction
+        .sliding;
+    let decreasing = mu.windows(2).all(|w| w[1] < w[0]);
+    let increasing = mu.windows(2).all(|w| w[1] > w[0]);
+    assert!(decreasing || increasing, "not monotone: {mu:?}");
+    for m in &mu {
+        assert!((m / line_mu - 1.0).abs() < 0.05, "{mu:?} vs line {line_mu}");
+    }
+}
+
+fn repro(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
+        .args(args)
+        .output()
+        .expect("run repro");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+const HEAVY: [&str; 13] = [
+    "solve",
+    "--line",
+    "--lubricant",
+    "mineral-oil-a",
+    "--temperature",
+    "40",
+    "--ph",
+    "3e9",
+    "--um",
+    "7",
+    "--slip",
+    "0.001",
+    "--tau0=8e6",
+];
+
+#[test]
+fn cli_solve_line_json_has_the_point_contact_keys() {
+    let mut args = HEAVY.to_vec();
+    args.extend(["--json", "-q", "--level", "7"]);
+    let (code, out, err) = repro(&args);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    for key in [
+        "level",
+        "m",
+        "l",
+        "s_bar",
+        "alpha_bar",
+        "lambda",
+        "kappa",
+        "h_central",
+        "h_min",
+        "hc_moes",
+        "hmin_moes",
+        "mu_bar_sliding",
+        "mu_bar_rolling",
+        "mu_bar_total",
+        "tau_c",
+        "cycles",
+        "residual",
+        "seconds",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(v["contact"], "line");
+    assert_eq!(v["level"], 7);
+    // Line-contact M of the heavy case: W' U^{-1/2} = 157.9 (hand value, 4 digits).
+    assert!((v["m"].as_f64().unwrap() - 157.9).abs() < 0.1);
+    let mu = v["mu_bar_sliding"].as_f64().unwrap();
+    assert!(mu > 30.0 && mu < 50.0, "mu {mu}");
+}
+
+#[test]
+fn cli_solve_line_dimensionless_and_rejected_flags() {
+    let (code, out, err) = repro(&[
+        "solve", "--line", "--m", "20", "--l", "10", "--s-bar", "0.1", "--json", "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["level"], 8);
+    for (flag, value) in [("--ry", "0.1"), ("--d", "0.5")] {
+        let mut args = HEAVY.to_vec();
+        args.extend([flag, value]);
+        let (code, _, err) = repro(&args);
+        assert_ne!(code, 0);
+        assert!(err.contains(flag), "{flag}: {err}");
+    }
+}
