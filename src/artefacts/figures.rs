@@ -41,7 +41,8 @@ fn series_key(name: &str, run: &CaseRun) -> String {
     }
 }
 
-/// Renders figure `name` from its runs, `xy` giving each solved case's point.
+/// Renders figure `name` from its runs, `xy` giving each solved case's point, with `extra`
+/// series (the line contacts of Fig. 7) drawn after them.
 pub fn svg(
     name: &str,
     title: &str,
@@ -49,6 +50,7 @@ pub fn svg(
     xy: &dyn Fn(&CaseRun) -> Option<(f64, f64)>,
     severity: bool,
     total: bool,
+    extra: &[Series],
 ) -> Result<Option<String>, String> {
     let mut keys: Vec<String> = Vec::new();
     let mut series: Vec<Series> = Vec::new();
@@ -68,6 +70,12 @@ pub fn svg(
             }
         };
         series[i].points.push(p);
+    }
+    for e in extra {
+        series.push(Series {
+            marker: MARKERS[series.len() % MARKERS.len()],
+            ..e.clone()
+        });
     }
     let failed = runs.iter().filter(|r| r.record().is_none()).count();
     let xs: Vec<f64> = series

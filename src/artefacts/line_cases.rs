@@ -1,10 +1,14 @@
 //! The line contacts of Fig. 7: the five Table 3 load cases of `cases/fig7.toml` (mineral oil
-//! A, Roelands, Dowson-Higginson, Eyring) without their `Ry`.
+//! A, Roelands, Dowson-Higginson, Eyring) without their `Ry`, solved by the 1-D solver.
 
+use super::csv::{num, table};
+use super::fit::{mastercurve, PAPER_C};
 use super::sweep::shipped_sweep;
 use crate::physics::case::{Physics, Spec};
-use crate::physics::line_contact::LinePhysicalCase;
+use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
 use crate::physics::lubricant::LubricantTable;
+use crate::solver::line::{solve, LineSolution, Params};
+use rayon::prelude::*;
 
 /// The five Table 3 cases as line contacts, in the order of the table, with the physics of
 /// Figs. 4-7. The rows are read from the shipped `cases/fig7.toml` (its `D = 1/2` block), the
@@ -29,6 +33,120 @@ pub fn table3_line_cases() -> Result<(Vec<LinePhysicalCase>, Physics), String> {
         ));
     }
     Ok((out, Physics::figs_4_to_7()))
+}
+
+/// One Table 3 line contact solved for Fig. 7.
+#[derive(Debug, Clone)]
+pub struct LineRun {
+    /// The case.
+    pub case: LinePhysicalCase,
+    /// Its problem (groups, `tau_c`).
+    pub problem: LineProblem,
+    /// The solution, or the solver's error as text.
+    pub outcome: Result<LineSolution, String>,
+}
+
+/// Solves the five Table 3 line contacts at `level` (in parallel, each on one thread).
+pub fn solve_table3(level: u32) -> Result<Vec<LineRun>, String> {
+    let (cases, physics) = table3_line_cases()?;
+    let params = Params::at_level(level);
+    cases
+        .into_par_iter()
+        .map(|case| {
+            let problem = LineProblem::from_physical(&case, physics)
+                .map_err(|e| format!("cases/fig7.toml: line contact: {e}"))?;
+            let outcome = solve(&problem, &params, None).map_err(|e| e.to_string());
+            Ok(LineRun {
+                case,
+                problem,
+                outcome,
+            })
+        })
+        .collect()
+}
+
+/// `fig7-line.csv`: one row per line contact, the columns of the point-contact CSV that apply.
+pub fn line_csv(runs: &[LineRun], level: u32) -> String {
+    let header = [
+        "case",
+        "ph_gpa",
+        "um_m_s",
+        "slip",
+        "tau0_mpa",
+        "level",
+        "m",
+        "l",
+        "s_bar",
+        "alpha_bar",
+        "tau_c",
+        "mu_bar_eq13",
+        "hc",
+        "hc_moes",
+        "hmin_moes",
+        "mu_bar_sliding",
+        "rel_dev_eq13",
+        "cycles",
+        "seconds",
+        "status",
+    ];
+    let rows: Vec<Vec<String>> = runs
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let g = &r.problem.groups;
+            let tau_c = r.problem.tau_c();
+            let eq13 = mastercurve(tau_c, PAPER_C);
+            let mut row = vec![
+                (i + 1).to_string(),
+                num(r.case.ph_pa / 1e9),
+                num(r.case.um_m_s),
+                num(r.case.slip),
+                num(r.case.tau0_pa / 1e6),
+                level.to_string(),
+                num(g.m),
+                num(g.l),
+                num(g.s_bar),
+                num(g.alpha_bar),
+                num(tau_c),
+                num(eq13),
+            ];
+            match &r.outcome {
+                Ok(s) => row.extend([
+                    num(s.film.h_central),
+                    num(s.film.hc_moes),
+                    num(s.film.hmin_moes),
+                    num(s.friction.sliding),
+                    num(s.friction.sliding / eq13 - 1.0),
+                    s.info.cycles.to_string(),
+                    format!("{:.3}", s.info.seconds),
+                    "solved".into(),
+                ]),
+                Err(e) => {
+                    row.extend(std::iter::repeat_n(String::new(), 7));
+                    let kind = if e.starts_with("not converged") {
+                        "failed: not converged"
+                    } else {
+                        "failed"
+                    };
+                    row.push(kind.into());
+                }
+            }
+            row
+        })
+        .collect();
+    table(&header, &rows)
+}
+
+/// The solved line contacts as `(tau_c, sliding mu-bar)`.
+pub fn line_points(runs: &[LineRun]) -> Vec<(f64, f64)> {
+    runs.iter()
+        .filter_map(|r| {
+            r.outcome
+                .as_ref()
+                .ok()
+                .map(|s| (r.problem.tau_c(), s.friction.sliding))
+        })
+        .collect()
 }
 
 #[cfg(test)]

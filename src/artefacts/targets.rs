@@ -5,6 +5,7 @@
 use super::cache::Cache;
 use super::csv::{num, opt, table, write_atomic};
 use super::fit::{fit, mastercurve, Fit, PAPER_C};
+use super::plot::{Marker, Series};
 use super::run::{run_cases, CaseRun, Outcome, RunProgress};
 use super::sweep::{shipped_sweep, Sweep};
 use crate::physics::case::{LubricantSpec, Spec};
@@ -15,6 +16,10 @@ use std::time::Instant;
 
 /// The paper's working level (256 x 256), the default of every computed figure.
 pub const WORKING_LEVEL: u32 = 7;
+
+/// Level of the line contacts of Fig. 7 (512 intervals): sliding `mu-bar` within 0.2 % of
+/// level 11 on the heaviest Table 3 case (LINE_NOTES.md), a few tenths of a second per case.
+pub const LINE_LEVEL: u32 = 8;
 
 /// `tau_c` above which the fit of Figs. 2-7 is taken: below it the centre of the contact is
 /// not yet in the Eyring regime (`tau_m = asinh(tau_c/2) < 4`), friction is no longer
@@ -54,7 +59,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig4", description: "Sliding mu-bar vs tau_c, mineral oil A, Roelands + Dowson-Higginson, Table 2 grid (243 cases)", kind: Kind::Computed },
     Target { name: "fig5", description: "Sliding mu-bar vs tau_c, traction fluid, Table 2 grid (243 cases)", kind: Kind::Computed },
     Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed },
-    Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2 and 1/5 at the Table 3 cases", kind: Kind::Computed },
+    Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed },
     Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table },
 ];
 
@@ -624,7 +629,26 @@ fn figure(name: &'static str, ctx: &Context) -> Result<Built, String> {
         "fig2" => "total mu-bar follows Eq. (13), c = 5, except a cluster at low tau_c where rolling friction dominates",
         _ => "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)",
     };
-    let (mut built, runs) = sweep_figure(name, &sweep, &spec, ctx)?;
+    // Fig. 7 adds the Table 3 line contacts, solved by the 1-D solver at its working level.
+    let (line, extra) = if name == "fig7" {
+        let runs = super::line_cases::solve_table3(LINE_LEVEL)?;
+        let series = Series {
+            label: "line contact".into(),
+            points: super::line_cases::line_points(&runs),
+            marker: Marker::Cross,
+        };
+        (Some(runs), vec![series])
+    } else {
+        (None, Vec::new())
+    };
+    let (mut built, runs) = sweep_figure(name, &sweep, &spec, ctx, &extra)?;
+    if let Some(line) = &line {
+        let csv = super::line_cases::line_csv(line, LINE_LEVEL);
+        built.files.push(write(ctx, "fig7-line.csv", &csv)?);
+        built.cases += line.len();
+        let solved = line.iter().filter(|r| r.outcome.is_ok()).count();
+        built.solved = built.solved.map(|s| s + solved);
+    }
     built.name = name;
     built.paper_claim = claim.to_string();
     if spec.severity {
@@ -665,7 +689,7 @@ pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<Built, String> 
         total: false,
         severity: false,
     };
-    let (mut built, _) = sweep_figure(stem, sweep, &spec, ctx)?;
+    let (mut built, _) = sweep_figure(stem, sweep, &spec, ctx, &[])?;
     built.paper_claim = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)".into();
     Ok(built)
 }
@@ -676,6 +700,7 @@ fn sweep_figure(
     sweep: &Sweep,
     spec: &FigureSpec,
     ctx: &Context,
+    extra: &[Series],
 ) -> Result<(Built, Vec<CaseRun>), String> {
     let (runs, level) = run_sweep(stem, sweep, ctx)?;
     for (i, r) in runs.iter().enumerate() {
@@ -702,6 +727,7 @@ fn sweep_figure(
     let points: Vec<(f64, f64)> = runs
         .iter()
         .filter_map(|r| xy(r, spec).map(|p| (r.problem.tau_c(), p.1)))
+        .chain(extra.iter().flat_map(|e| e.points.iter().copied()))
         .collect();
     let (fit_range, fit_all) = if spec.severity {
         (None, None)
@@ -723,6 +749,7 @@ fn sweep_figure(
         &|r| xy(r, spec),
         spec.severity,
         spec.total,
+        extra,
     )? {
         files.push(write(ctx, &format!("{stem}.svg"), &svg)?);
     }
