@@ -55,6 +55,9 @@ pub enum Command {
     All(TargetArgs),
     /// Run your own sweep file (the format of cases/*.toml) and put it on the mastercurve.
     Run(RunArgs),
+    /// What accuracy costs: representative cases at levels 4-8, error against a Richardson
+    /// extrapolation and wall time (figures/accuracy.csv, accuracy.svg, accuracy_levels.csv).
+    Accuracy(crate::accuracy_cmd::AccuracyArgs),
     /// List the targets.
     List,
 }

@@ -1,5 +1,6 @@
 //! `repro`: parses the command line and dispatches; all work lives in the library.
 
+mod accuracy_cmd;
 mod cli;
 mod report;
 
@@ -24,6 +25,7 @@ fn main() -> ExitCode {
         Command::Fig7(a) => report::target("fig7", &a),
         Command::All(a) => report::all(&a),
         Command::Run(a) => report::run_study(&a),
+        Command::Accuracy(a) => accuracy_cmd::run(&a),
         Command::List => {
             for t in repro::artefacts::targets::TARGETS {
                 println!("{:<8} {}", t.name, t.description);
