@@ -48,7 +48,7 @@ fn parse_levels(s: &str) -> std::result::Result<Levels, String> {
     Ok(Levels(levels))
 }
 
-/// Runs the study; false when a level failed.
+/// Runs the study; false when a case converged at none of its levels.
 pub fn run(args: &AccuracyArgs) -> Result<bool> {
     for &l in &args.levels.0 {
         crate::cli::check_level("--levels", l)?;
@@ -97,7 +97,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
             .collect::<Vec<_>>()
             .join(", ")
     );
-    Ok(studies
-        .iter()
-        .all(|s| s.levels.iter().all(|r| r.outcome.is_ok())))
+    // A level that fails (a film that collapses on a coarse grid) is a result of the study,
+    // not a failure of the command; a case with no converged level at all is.
+    Ok(studies.iter().all(|s| s.reference.is_some()))
 }
