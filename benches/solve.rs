@@ -4,8 +4,8 @@
 //!
 //! `cargo bench` runs everything (levels 5-7; level 8 is measured by `repro accuracy` only,
 //! a sample of ten level-8 solves would take minutes). Under `cargo test --all-targets` the
-//! harness runs each benchmark once as a smoke test; there only the level-5 solves and a
-//! level-4 target run, so that the test run stays within seconds (the full set would take a
+//! harness runs each benchmark once as a smoke test; there only the level-5 solves, the
+//! effects at level 4 and a level-4 target run, so that the test run stays within seconds (the full set would take a
 //! minute of single solves).
 
 use criterion::{BenchmarkId, Criterion};
