@@ -68,6 +68,9 @@ pub enum Command {
     /// and new value of every difference. With --accept the differences are shown and the new
     /// results become the baselines (what `make snapshots` runs).
     Check(CheckArgs),
+    /// What accuracy costs: representative cases at levels 4-8, error against a Richardson
+    /// extrapolation and wall time (figures/accuracy.csv, accuracy.svg, accuracy_levels.csv).
+    Accuracy(crate::accuracy_cmd::AccuracyArgs),
     /// List the targets.
     List,
 }

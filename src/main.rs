@@ -1,5 +1,6 @@
 //! `repro`: parses the command line and dispatches; all work lives in the library.
 
+mod accuracy_cmd;
 mod check;
 mod cli;
 mod predict;
@@ -30,6 +31,7 @@ fn main() -> ExitCode {
         Command::All(a) => report::all(&a),
         Command::Run(a) => report::run_study(&a),
         Command::Check(a) => check::check(&a),
+        Command::Accuracy(a) => accuracy_cmd::run(&a),
         Command::List => {
             for t in repro::artefacts::targets::TARGETS {
                 println!("{:<8} {}", t.name, t.description);

@@ -1,6 +1,7 @@
 //! The artefact pipeline: the paper's tables and figures as named targets, their case
 //! definitions (from `cases/`), and the files they write.
 
+pub mod accuracy;
 pub mod cache;
 pub mod csv;
 pub mod fig8;

@@ -1,5 +1,6 @@
 //! Density-pressure laws, dimensionless: `rho_bar = rho / rho0` as a function of `P = p / p_H`.
 
+use super::evaluations::{record, Effect};
 use serde::{Deserialize, Serialize};
 
 /// Which density law a case asks for.
@@ -40,6 +41,7 @@ impl Density {
         match *self {
             Density::Incompressible => 1.0,
             Density::DowsonHigginson { ph_pa } => {
+                record(Effect::DowsonHigginson);
                 let p = ph_pa * p.max(0.0);
                 (5.9e8 + 1.34 * p) / (5.9e8 + p)
             }

@@ -3,6 +3,7 @@
 
 pub mod case;
 pub mod density;
+pub mod evaluations;
 pub mod film;
 pub mod hertz;
 pub mod line_contact;

@@ -6,6 +6,7 @@
 //! `tau_m = asinh(x)` (Eq. 4), `cosh(tau_m) = sqrt(1 + x^2)` and `sinh(tau_m) = x`.
 //! Written this way nothing overflows even where `eta_bar` is 1e25.
 
+use super::evaluations::{record, Effect};
 use serde::{Deserialize, Serialize};
 
 /// Which rheology a case asks for.
@@ -26,7 +27,10 @@ impl Rheology {
     pub fn mean_shear_stress(self, x: f64) -> f64 {
         match self {
             Rheology::Newtonian => x,
-            Rheology::Eyring => x.asinh(),
+            Rheology::Eyring => {
+                record(Effect::Eyring);
+                x.asinh()
+            }
         }
     }
 
@@ -35,7 +39,10 @@ impl Rheology {
     pub fn flow_factor_x(self, x: f64) -> f64 {
         match self {
             Rheology::Newtonian => 1.0,
-            Rheology::Eyring => x.hypot(1.0),
+            Rheology::Eyring => {
+                record(Effect::Eyring);
+                x.hypot(1.0)
+            }
         }
     }
 
@@ -46,6 +53,7 @@ impl Rheology {
         match self {
             Rheology::Newtonian => 1.0,
             Rheology::Eyring => {
+                record(Effect::Eyring);
                 if x.abs() < 1e-4 {
                     1.0 + x * x / 6.0
                 } else {
@@ -70,6 +78,7 @@ impl Rheology {
             // sqrt(a^2 + b^2) rather than hypot: a = H/eta <= H and b = N S are far from
             // overflow, and hypot's extra care costs a tenth of a solve.
             Rheology::Eyring => {
+                record(Effect::Eyring);
                 let a = h / eta;
                 h * h * (a * a + n_s * n_s).sqrt()
             }
@@ -86,6 +95,7 @@ impl Rheology {
         match self {
             Rheology::Newtonian => h * h * h / eta,
             Rheology::Eyring => {
+                record(Effect::Eyring);
                 let x = n_s * eta / h;
                 if x < 1e-4 {
                     h * h * h / eta * (1.0 + x * x / 6.0)

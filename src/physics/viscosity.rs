@@ -1,5 +1,6 @@
 //! Viscosity-pressure laws, dimensionless: `eta_bar = eta / eta0` as a function of `P = p / p_H`.
 
+use super::evaluations::{record, Effect};
 use serde::{Deserialize, Serialize};
 
 /// Reference pressure of the Roelands equation, Pa.
@@ -72,7 +73,10 @@ impl Viscosity {
                 ln_ratio,
                 z,
                 ph_over_p0,
-            } => ln_ratio * ((1.0 + ph_over_p0 * p).powf(z) - 1.0),
+            } => {
+                record(Effect::Roelands);
+                ln_ratio * ((1.0 + ph_over_p0 * p).powf(z) - 1.0)
+            }
         }
     }
 

@@ -1,6 +1,7 @@
 //! Film thickness and reduced friction, Eq. (8), from a converged point-contact solution.
 
 use super::level::{Level, Model};
+use crate::physics::evaluations::{record, Effect};
 use crate::solver::output::{Film, Friction};
 
 /// Central film (at `X = Y = 0`) and minimum film, in `H = h/c` and in Moes units.
@@ -23,6 +24,9 @@ pub(crate) fn film(level: &Level, moes_scale: f64) -> Film {
 /// for a Newtonian fluid). Rolling part (only when `rolling` is set): the Poiseuille shear
 /// on the surface, `(h/2) dp/dx / tau0 = (6 N / lambda) H dP/dX`, central differences.
 pub(crate) fn friction(level: &Level, model: &Model, rolling_scale: Option<f64>) -> Friction {
+    if rolling_scale.is_some() {
+        record(Effect::RollingFriction);
+    }
     let g = &level.grid;
     let (mut load, mut sliding, mut rolling) = (0.0, 0.0, 0.0);
     for j in 1..g.ny {

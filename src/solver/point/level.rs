@@ -46,9 +46,14 @@ impl Model {
         }
     }
 
-    /// `eta_bar(P)`.
+    /// `eta_bar(P)`. Where `P <= 0` (most of the domain: outside the contact and in the
+    /// cavitated outlet) every law gives exactly `exp(0) = 1`, returned without evaluating it
+    /// (the same bits, a third of the coefficient update saved).
     #[inline]
     pub fn eta(&self, p: f64) -> f64 {
+        if p <= 0.0 {
+            return 1.0;
+        }
         self.viscosity.ln_eta_bar(p).min(LN_ETA_MAX).exp()
     }
 
@@ -123,7 +128,8 @@ impl Level {
             let h = self.h[k];
             let eta = m.eta(p);
             let rho = if compressible {
-                let r = m.density.rho_bar(p);
+                // rho_bar(P <= 0) = 1 exactly: not evaluated there, like the viscosity.
+                let r = if p > 0.0 { m.density.rho_bar(p) } else { 1.0 };
                 self.rho[k] = r;
                 r
             } else {

@@ -1,0 +1,151 @@
+//! Criterion benchmarks: one point-contact solve per level for the cases of the accuracy
+//! study (`repro accuracy`), the cost of each optional physical effect on the Table 4 case,
+//! and one whole small target.
+//!
+//! `cargo bench` runs everything (levels 5-7; level 8 is measured by `repro accuracy` only,
+//! a sample of ten level-8 solves would take minutes). Under `cargo test --all-targets` the
+//! harness runs each benchmark once as a smoke test; there only the level-5 solves, the
+//! effects at level 4 and a level-4 target run, so that the test run stays within seconds (the full set would take a
+//! minute of single solves).
+
+use criterion::{BenchmarkId, Criterion};
+use repro::artefacts::accuracy::{study_cases, Contact};
+use repro::artefacts::targets::{build, Context};
+use repro::physics::case::{Physics, Problem};
+use repro::physics::density::DensityLaw;
+use repro::physics::rheology::Rheology;
+use repro::physics::viscosity::ViscosityLaw;
+use repro::solver::point::{solve, Params};
+use std::time::Duration;
+
+/// True under `cargo bench` (the harness is given `--bench`); false in test mode.
+fn full() -> bool {
+    std::env::args().any(|a| a == "--bench")
+}
+
+fn levels(c: &mut Criterion) {
+    let cases = study_cases(false).expect("the shipped cases resolve");
+    let levels: &[u32] = if full() { &[5, 6, 7] } else { &[5] };
+    let mut group = c.benchmark_group("solve");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(20));
+    for case in &cases {
+        for &level in levels {
+            // The study's cases that fail at a level (a film that collapses on a coarse grid)
+            // are not timed there: a failure is not a cost.
+            if case.contact.solve(level).is_err() {
+                continue;
+            }
+            group.bench_with_input(BenchmarkId::new(case.name, level), &level, |b, &l| {
+                b.iter(|| case.contact.solve(l))
+            });
+        }
+    }
+    group.finish();
+}
+
+/// The Table 4 case with one effect swapped for its cheaper alternative.
+fn effects(c: &mut Criterion) {
+    let cases = study_cases(false).expect("the shipped cases resolve");
+    let Some(Contact::Point { problem, .. }) = cases
+        .iter()
+        .find(|c| c.name == "table4")
+        .map(|c| &c.contact)
+    else {
+        panic!("the study has the Table 4 case");
+    };
+    let base: &Problem = problem;
+    let level = if full() { 6 } else { 4 };
+    let with = |physics: Physics| -> Problem {
+        let mut p = base.clone();
+        let g = p.groups;
+        p.viscosity = match physics.viscosity {
+            ViscosityLaw::Barus => repro::physics::viscosity::Viscosity::barus(g.alpha_bar),
+            ViscosityLaw::Roelands => base.viscosity,
+        };
+        p.density = match physics.density {
+            DensityLaw::Incompressible => repro::physics::density::Density::Incompressible,
+            DensityLaw::DowsonHigginson => base.density,
+        };
+        p.rheology = physics.rheology;
+        p
+    };
+    let full_physics = Physics::figs_4_to_7();
+    let variants = [
+        ("roelands-dh-eyring", with(full_physics), true),
+        (
+            "barus",
+            with(Physics {
+                viscosity: ViscosityLaw::Barus,
+                ..full_physics
+            }),
+            true,
+        ),
+        (
+            "incompressible",
+            with(Physics {
+                density: DensityLaw::Incompressible,
+                ..full_physics
+            }),
+            true,
+        ),
+        (
+            "newtonian",
+            with(Physics {
+                rheology: Rheology::Newtonian,
+                ..full_physics
+            }),
+            true,
+        ),
+        ("no-rolling", with(full_physics), false),
+    ];
+    let mut group = c.benchmark_group(format!("effects-level{level}"));
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(15));
+    for (name, problem, rolling) in &variants {
+        let params = Params {
+            rolling_friction: *rolling,
+            require_positive_film: false,
+            ..Params::at_level(level)
+        };
+        if solve(problem, &params, None).is_err() {
+            eprintln!("effects: {name} does not converge at level {level}; not timed");
+            continue;
+        }
+        group.bench_function(*name, |b| b.iter(|| solve(problem, &params, None)));
+    }
+    group.finish();
+}
+
+/// A whole target, cold (no cache): Fig. 7's ten elliptical cases and five line contacts, in parallel as `repro fig7`
+/// runs them, files written to a temporary folder.
+fn target(c: &mut Criterion) {
+    let level = if full() { 5 } else { 4 };
+    let out = std::env::temp_dir().join(format!("repro-bench-{}", std::process::id()));
+    let progress = |_: &str, _: repro::artefacts::run::RunProgress| {};
+    let warn = |_: String| {};
+    let ctx = Context {
+        out: out.clone(),
+        cache: None,
+        level: Some(level),
+        progress: &progress,
+        warn: &warn,
+        stride: 1,
+    };
+    let mut group = c.benchmark_group("target");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(30));
+    group.bench_function(format!("fig7-level{level}-cold"), |b| {
+        b.iter(|| build("fig7", &ctx).expect("fig7 builds"))
+    });
+    group.finish();
+    let _ = std::fs::remove_dir_all(out);
+}
+
+fn main() {
+    let mut c = Criterion::default().configure_from_args();
+    levels(&mut c);
+    effects(&mut c);
+    target(&mut c);
+    c.final_summary();
+}
