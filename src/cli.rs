@@ -92,7 +92,8 @@ pub struct CheckArgs {
 
 #[derive(Debug, Args)]
 pub struct TargetArgs {
-    /// Grid level of the computed targets (default: the paper's working level 7).
+    /// Grid level of the computed targets (default: each target's level from the accuracy
+    /// study, shown by `repro list`; `make figures` passes the paper's working level 7).
     #[arg(long)]
     pub level: Option<u32>,
     /// Output folder.

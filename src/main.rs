@@ -34,7 +34,11 @@ fn main() -> ExitCode {
         Command::Accuracy(a) => accuracy_cmd::run(&a),
         Command::List => {
             for t in repro::artefacts::targets::TARGETS {
-                println!("{:<8} {}", t.name, t.description);
+                let level = t
+                    .default_level
+                    .map(|l| format!("[level {l}]"))
+                    .unwrap_or_default();
+                println!("{:<8} {:<10} {}", t.name, level, t.description);
             }
             Ok(true)
         }

@@ -69,6 +69,11 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
     if let Some(l) = b.level {
         facts.push(format!("level {l}"));
     }
+    if let Some(l) = super::targets::target(b.name).and_then(|t| t.default_level) {
+        facts.push(format!(
+            "cheapest level with mu-bar within 1 % (repro accuracy): {l}"
+        ));
+    }
     facts.push(format!("{:.1} s", b.seconds));
     s.push_str(&format!(
         "<dt>run</dt><dd>{}</dd>\n",

@@ -45,22 +45,27 @@ pub struct Target {
     pub description: &'static str,
     /// Emitted or computed.
     pub kind: Kind,
+    /// Level of `repro <target>` without `--level`: the cheapest level whose sliding `mu-bar`
+    /// is within 1 % of the Richardson extrapolation for the case that stands for the target
+    /// in `repro accuracy` (figures/accuracy_levels.csv). `make figures` builds every target
+    /// at the paper's working level instead.
+    pub default_level: Option<u32>,
 }
 
 /// Every target, in the paper's order.
 pub const TARGETS: &[Target] = &[
-    Target { name: "table1", description: "Lubricant properties alpha, eta0 at 40/60/100 C (from cases/lubricants.toml)", kind: Kind::Table },
-    Target { name: "table2", description: "Ranges of the operating parameters, with the derived M, L, S-bar ranges per lubricant", kind: Kind::Table },
-    Target { name: "table3", description: "The five contact-configuration cases, with M, L, S-bar, tau_c per geometry", kind: Kind::Table },
-    Target { name: "table4", description: "Grid convergence of Hc and sliding mu-bar for the Appendix case, levels 5-8, with wall times", kind: Kind::Computed },
-    Target { name: "fig1", description: "Total mu-bar vs S-bar^(1/4) M L^3, Barus-incompressible circular contact (125 cases)", kind: Kind::Computed },
-    Target { name: "fig2", description: "Total mu-bar vs tau_c, same sweep, Eq. (13) dashed", kind: Kind::Computed },
-    Target { name: "fig3", description: "Sliding mu-bar vs tau_c, same sweep, Eq. (13) dashed", kind: Kind::Computed },
-    Target { name: "fig4", description: "Sliding mu-bar vs tau_c, mineral oil A, Roelands + Dowson-Higginson, Table 2 grid (243 cases)", kind: Kind::Computed },
-    Target { name: "fig5", description: "Sliding mu-bar vs tau_c, traction fluid, Table 2 grid (243 cases)", kind: Kind::Computed },
-    Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed },
-    Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed },
-    Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table },
+    Target { name: "table1", description: "Lubricant properties alpha, eta0 at 40/60/100 C (from cases/lubricants.toml)", kind: Kind::Table, default_level: None },
+    Target { name: "table2", description: "Ranges of the operating parameters, with the derived M, L, S-bar ranges per lubricant", kind: Kind::Table, default_level: None },
+    Target { name: "table3", description: "The five contact-configuration cases, with M, L, S-bar, tau_c per geometry", kind: Kind::Table, default_level: None },
+    Target { name: "table4", description: "Grid convergence of Hc and sliding mu-bar for the Appendix case, levels 5-8, with wall times", kind: Kind::Computed, default_level: None },
+    Target { name: "fig1", description: "Total mu-bar vs S-bar^(1/4) M L^3, Barus-incompressible circular contact (125 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig2", description: "Total mu-bar vs tau_c, same sweep, Eq. (13) dashed", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig3", description: "Sliding mu-bar vs tau_c, same sweep, Eq. (13) dashed", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig4", description: "Sliding mu-bar vs tau_c, mineral oil A, Roelands + Dowson-Higginson, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig5", description: "Sliding mu-bar vs tau_c, traction fluid, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed, default_level: Some(7) },
+    Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
 ];
 
 /// Looks a target up.
@@ -463,7 +468,11 @@ fn other_sweep(name: &str) -> &'static str {
 
 /// Runs a sweep at the context's level (the sweep's own, else the working level).
 pub fn run_sweep(label: &str, sweep: &Sweep, ctx: &Context) -> Result<(Vec<CaseRun>, u32), String> {
-    let level = ctx.level.or(sweep.level).unwrap_or(WORKING_LEVEL);
+    let level = ctx
+        .level
+        .or(sweep.level)
+        .or(target(label).and_then(|t| t.default_level))
+        .unwrap_or(WORKING_LEVEL);
     let params = Params::at_level(level);
     let progress = |p: RunProgress| (ctx.progress)(label, p);
     let cases: Vec<_> = if ctx.stride > 1 && sweep.cases.len() > SAMPLED_ABOVE {
