@@ -598,7 +598,7 @@ pub fn svg(studies: &[CaseStudy]) -> Result<String, String> {
         })
         .collect();
     let fig = Figure {
-        title: "What accuracy costs: levels 4-8 (left to right)".into(),
+        title: "What accuracy costs: one marker per level, finer to the right".into(),
         x_label: "wall time of one solve (s)".into(),
         y_label: format!("error of sliding {MU_BAR} vs Richardson extrapolation"),
         x_scale: Scale::Log,
