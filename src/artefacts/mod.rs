@@ -15,4 +15,5 @@ pub mod run;
 pub mod snapshot;
 pub mod sweep;
 pub mod table4;
+pub mod tables;
 pub mod targets;
