@@ -19,6 +19,9 @@ fn reject_point_flags(args: &SolveArgs) -> Result<()> {
     if args.d.is_some() {
         bail!("--d: a line contact has D = Rx/Ry = 0; drop --d with --line");
     }
+    if !matches!(args.domain, crate::cli::DomainArg::Auto) {
+        bail!("--domain: the line contact has its own domain (-4.5 <= X <= 1.5); drop --domain with --line");
+    }
     Ok(())
 }
 

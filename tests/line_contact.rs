@@ -165,7 +165,7 @@ fn cli_solve_line_dimensionless_and_rejected_flags() {
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(v["level"], 8);
-    for (flag, value) in [("--ry", "0.1"), ("--d", "0.5")] {
+    for (flag, value) in [("--ry", "0.1"), ("--d", "0.5"), ("--domain", "wide")] {
         let mut args = HEAVY.to_vec();
         args.extend([flag, value]);
         let (code, _, err) = repro(&args);
