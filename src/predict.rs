@@ -164,8 +164,7 @@ pub fn predict(args: &PredictArgs) -> Result<bool> {
         match solve_point(&problem, &params, Some(&mut printer)) {
             Ok(s) => Some((problem, s)),
             Err(e) => {
-                eprintln!("solve failed: {e}");
-                eprintln!("residual history: {:?}", e.residual_history());
+                crate::report::print_failure(&e);
                 return Ok(false);
             }
         }

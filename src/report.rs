@@ -40,6 +40,13 @@ pub(crate) fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
     }
 }
 
+/// Prints why a solve failed, with its residual history, on stderr (`repro solve`, `solve
+/// --line`, `predict --solve`).
+pub(crate) fn print_failure(e: &repro::solver::output::SolveError) {
+    eprintln!("solve failed: {e}");
+    eprintln!("residual history: {:?}", e.residual_history());
+}
+
 /// `repro solve`: returns false when the solve failed (after printing why).
 pub fn solve(args: &SolveArgs) -> Result<bool> {
     if args.line {
@@ -52,8 +59,7 @@ pub fn solve(args: &SolveArgs) -> Result<bool> {
     let solution = match solve_point(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("solve failed: {e}");
-            eprintln!("residual history: {:?}", e.residual_history());
+            print_failure(&e);
             return Ok(false);
         }
     };

@@ -79,8 +79,7 @@ pub fn solve_line(args: &SolveArgs) -> Result<bool> {
     let s = match solve(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("solve failed: {e}");
-            eprintln!("residual history: {:?}", e.residual_history());
+            crate::report::print_failure(&e);
             return Ok(false);
         }
     };

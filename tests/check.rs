@@ -1,26 +1,13 @@
 //! Snapshot checks: every target agrees with the committed baselines, a 1 % change or a changed
 //! Eyring stress is caught, and neither the thread count nor a rerun changes a result.
 
+use crate::support::repro;
 use repro::artefacts::run::{run_cases, CaseRun};
 use repro::artefacts::snapshot::compare;
 use repro::artefacts::sweep::Sweep;
 use repro::artefacts::targets::runs_csv;
 use repro::solver::point::Params;
 use std::path::PathBuf;
-use std::process::Command;
-
-fn repro(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run repro");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("repro-test-{name}-{}", std::process::id()));

@@ -1,18 +1,6 @@
 //! The `repro` binary: flags, JSON output and errors that name the flag.
 
-use std::process::Command;
-
-fn repro(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
-        .args(args)
-        .output()
-        .expect("run repro");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
+use crate::support::repro;
 
 #[test]
 fn solve_json_has_every_documented_key() {

@@ -1,13 +1,13 @@
 //! The line-contact solver through the library API and the CLI: the Table 3 line cases of
 //! Fig. 7, the point-contact trend in Rx/Ry, and `repro solve --line`.
 
+use crate::support::repro;
 use repro::artefacts::line_cases::table3_line_cases;
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::line_contact::LineProblem;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::line;
 use repro::solver::point;
-use std::process::Command;
 
 #[test]
 fn table3_line_cases_converge_near_eq13() {
@@ -90,18 +90,6 @@ fn elliptical_friction_trend_in_rx_over_ry_and_the_line_value() {
     for m in &mu {
         assert!((m / line_mu - 1.0).abs() < 0.05, "{mu:?} vs line {line_mu}");
     }
-}
-
-fn repro(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
-        .args(args)
-        .output()
-        .expect("run repro");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 const HEAVY: [&str; 13] = [

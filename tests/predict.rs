@@ -1,27 +1,10 @@
 //! `repro predict` (Eq. 14 for a user's contact) and `repro fig8` (measured data on the
 //! mastercurve): outputs, warnings, and errors that name the flag, file, row and column.
 
+use crate::support::{repro, repro_in};
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::lubricant::LubricantTable;
-use std::path::{Path, PathBuf};
-use std::process::Command;
-
-fn repro_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
-        .current_dir(dir)
-        .args(args)
-        .output()
-        .expect("run repro");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn repro(args: &[&str]) -> (i32, String, String) {
-    repro_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
-}
+use std::path::PathBuf;
 
 /// The Appendix (Table 4) case.
 const WORKED: [&str; 13] = [

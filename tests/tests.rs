@@ -5,5 +5,6 @@ mod cli;
 mod line_contact;
 mod point_contact;
 mod predict;
+mod support;
 mod text;
 mod traction;

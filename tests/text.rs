@@ -2,20 +2,11 @@
 //! from cases/ (Tables 1-3). Review a change with `cargo insta review` (or accept it with
 //! `INSTA_UPDATE=always`); the computed CSVs are guarded by `repro check` instead.
 
-use std::process::Command;
-
+/// The stdout of `repro args`, which must succeed.
 fn repro(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("run repro");
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    let (code, out, err) = crate::support::repro(args);
+    assert_eq!(code, 0, "{err}");
+    out
 }
 
 #[test]

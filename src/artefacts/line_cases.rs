@@ -123,12 +123,7 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                 ]),
                 Err(e) => {
                     row.extend(std::iter::repeat_n(String::new(), 7));
-                    let kind = if e.starts_with("not converged") {
-                        "failed: not converged"
-                    } else {
-                        "failed"
-                    };
-                    row.push(kind.into());
+                    row.push(format!("failed: {}", super::run::failure_kind(e)));
                 }
             }
             row

@@ -71,6 +71,20 @@ pub enum Outcome {
     },
 }
 
+/// A short, stable name (no numbers) of a solver error given as its text, the same on every
+/// machine: for tables and snapshots of point and line contacts alike.
+pub fn failure_kind(error: &str) -> &'static str {
+    if error.starts_with("not converged") {
+        "not converged"
+    } else if error.starts_with("film thickness became non-positive") {
+        "film collapse"
+    } else if error.starts_with("non-finite") {
+        "non-finite"
+    } else {
+        "failed"
+    }
+}
+
 /// One case run.
 #[derive(Debug, Clone)]
 pub struct CaseRun {
@@ -92,15 +106,7 @@ impl CaseRun {
         let Outcome::Failed { error, .. } = &self.outcome else {
             return None;
         };
-        Some(if error.starts_with("not converged") {
-            "not converged"
-        } else if error.starts_with("film thickness became non-positive") {
-            "film collapse"
-        } else if error.starts_with("non-finite") {
-            "non-finite"
-        } else {
-            "failed"
-        })
+        Some(failure_kind(error))
     }
 
     pub fn record(&self) -> Option<&Record> {
