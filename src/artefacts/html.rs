@@ -144,11 +144,26 @@ claims quoted as &ldquo;paper&rdquo;.</p>\n<ul>\n",
         ));
     }
     page.push_str("</ul>\n");
+    page.push_str(&reading_c());
     for b in built {
         page.push_str(&section(b, read));
     }
     page.push_str("</body>\n</html>\n");
     page
+}
+
+/// How to read a fitted `c`: the `c` that the paper's own Table 4 friction implies at the
+/// Appendix case's `tau_c` (our Eq. 12, no solve needed).
+fn reading_c() -> String {
+    let Some((tau_c, c)) = super::table4::paper_implied_c() else {
+        return String::new();
+    };
+    format!(
+        "<p class=\"note\">Reading the fitted c: at large tau_c, Eq. (13) is ln(2 tau_c / c), so a \
+1 % change of mu-bar near 40 moves c by a factor 1.5. The paper's own level-7 friction of \
+Table 4 (41.13) at the case's tau_c = {tau_c:.3e} lies on Eq. (13) only with c = {c:.2}. \
+The RMS and largest deviations from Eq. (13) measure the collapse better than c does.</p>\n"
+    )
 }
 
 #[cfg(test)]

@@ -224,7 +224,9 @@ pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
             })
         })
         .collect::<Vec<_>>()
-        .join("; ");
+        .join("; ")
+        + "; "
+        + t4::mastercurve_note(&rows).trim_end();
     let claim = t4::PAPER
         .iter()
         .map(|p| format!("level {}: Hc {:.4e}, mu-bar {:.2}", p.0, p.1, p.2))
