@@ -32,6 +32,17 @@ impl Table4Case {
     pub fn shipped() -> Result<Self, String> {
         toml::from_str(CASE_TOML).map_err(|e| format!("cases/table4.toml: {e}"))
     }
+
+    /// The Appendix case as a dimensionless problem (Table 1's lubricants).
+    pub fn problem(&self) -> Result<Problem, String> {
+        Problem::from_case(&self.case, &LubricantTable::table1())
+            .map_err(|e| format!("cases/table4.toml: {e}"))
+    }
+}
+
+/// The paper's `(Hc, mu-bar)` at `level`, if it printed one.
+pub fn paper_at(level: u32) -> Option<(f64, f64)> {
+    PAPER.iter().find(|p| p.0 == level).map(|p| (p.1, p.2))
 }
 
 /// One level's result.
@@ -50,7 +61,7 @@ pub struct Row {
 impl Row {
     /// The paper's `(Hc, mu-bar)` at this level, if it printed one.
     pub fn paper(&self) -> Option<(f64, f64)> {
-        PAPER.iter().find(|p| p.0 == self.level).map(|p| (p.1, p.2))
+        paper_at(self.level)
     }
 }
 
@@ -71,8 +82,7 @@ pub fn compute(
     levels: &[u32],
     mut observer: impl FnMut(&Progress),
 ) -> Result<Vec<Row>, String> {
-    let problem = Problem::from_case(&spec.case, &LubricantTable::table1())
-        .map_err(|e| format!("cases/table4.toml: {e}"))?;
+    let problem = spec.problem()?;
     let mut rows = Vec::new();
     for &level in levels {
         let t = std::time::Instant::now();
@@ -216,14 +226,13 @@ pub fn to_text(rows: &[Row]) -> String {
 /// would put the finest level's `mu-bar` (ours and the paper's) on the curve.
 pub fn mastercurve_note(rows: &[Row]) -> String {
     use super::fit::{implied_c, mastercurve, PAPER_C};
-    let Some(r) = rows.iter().rev().find(|r| r.outcome.is_ok()) else {
+    let Some((r, ours)) = rows
+        .iter()
+        .rev()
+        .find_map(|r| Some((r, r.outcome.as_ref().ok()?.friction.sliding)))
+    else {
         return String::new();
     };
-    let ours = r
-        .outcome
-        .as_ref()
-        .map(|s| s.friction.sliding)
-        .unwrap_or(f64::NAN);
     let mut s = format!(
         "tau_c (Eq. 12) = {:.3e}: Eq. (13) gives mu-bar = {:.2}; level {} puts it on the curve with c = {:.2} (ours)",
         r.tau_c,
@@ -244,11 +253,9 @@ pub fn mastercurve_note(rows: &[Row]) -> String {
 /// `(tau_c, c)`: the Appendix case's `tau_c` (Eq. 12) and the `c` of Eq. (13) that the
 /// paper's own level-7 friction implies there. `None` if the shipped case does not load.
 pub fn paper_implied_c() -> Option<(f64, f64)> {
-    let spec = Table4Case::shipped().ok()?;
-    let problem = Problem::from_case(&spec.case, &LubricantTable::table1()).ok()?;
-    let tau_c = problem.tau_c();
-    let (_, _, mu_bar) = PAPER.iter().find(|p| p.0 == 7)?;
-    Some((tau_c, super::fit::implied_c(tau_c, *mu_bar)))
+    let tau_c = Table4Case::shipped().ok()?.problem().ok()?.tau_c();
+    let (_, mu_bar) = paper_at(7)?;
+    Some((tau_c, super::fit::implied_c(tau_c, mu_bar)))
 }
 
 #[cfg(test)]
@@ -265,12 +272,10 @@ mod tests {
     /// log-linear axes, not a least-squares constant of its own data.
     #[test]
     fn the_papers_own_table_4_value_implies_c_near_8() {
-        let spec = Table4Case::shipped().unwrap();
-        let problem = Problem::from_case(&spec.case, &LubricantTable::table1()).unwrap();
-        let tau_c = problem.tau_c();
+        let tau_c = Table4Case::shipped().unwrap().problem().unwrap().tau_c();
         assert!((tau_c / 3.0749e18 - 1.0).abs() < 1e-4, "tau_c {tau_c:e}");
         assert!((mastercurve(tau_c, PAPER_C) - 41.65).abs() < 0.01);
-        let paper_level7 = PAPER[2].2;
+        let (_, paper_level7) = paper_at(7).unwrap();
         let c = implied_c(tau_c, paper_level7);
         // 41.13 is printed to 4 digits: +-0.005 in mu-bar is +-0.5 % in c.
         assert!((c - 8.44).abs() < 0.05, "c {c}");
