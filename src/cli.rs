@@ -231,6 +231,11 @@ pub struct SolveArgs {
     /// Most multigrid cycles on the finest level.
     #[arg(long = "max-cycles", default_value_t = repro::solver::point::Params::default().max_cycles, help_heading = "Numerics")]
     pub max_cycles: usize,
+    /// Most Newton steps that finish a point-contact solve on the finest level when its
+    /// cycles stall or run out (only where the pressurised nodes fit a dense system of
+    /// 8000 unknowns, i.e. level 5 and light cases at level 6); 0 turns the finish off.
+    #[arg(long = "newton-steps", default_value_t = repro::solver::point::Params::default().newton_steps, help_heading = "Numerics")]
+    pub newton_steps: usize,
     /// Skip the rolling (Poiseuille) part of the friction.
     #[arg(long = "no-rolling", help_heading = "Numerics")]
     pub no_rolling: bool,
@@ -370,6 +375,7 @@ impl SolveArgs {
                 DomainArg::Wide => Domain::wide(),
             },
             max_cycles: self.max_cycles,
+            newton_steps: self.newton_steps,
             rolling_friction: !self.no_rolling,
             ..Params::default()
         })

@@ -17,8 +17,8 @@ pub(crate) fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
     move |p: &Progress| {
         if !quiet {
             eprintln!(
-                "  level {:>2} cycle {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}",
-                p.level, p.cycle, p.residual, p.worst_at.0, p.worst_at.1, p.pressure_change, p.load_error, p.h_central
+                "  level {:>2} {} {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}",
+                p.level, if p.newton { "newton" } else { "cycle " }, p.cycle, p.residual, p.worst_at.0, p.worst_at.1, p.pressure_change, p.load_error, p.h_central
             );
         }
     }
@@ -95,7 +95,8 @@ pub(crate) fn summary_json(
         "hc_moes": s.film.hc_moes, "hmin_moes": s.film.hmin_moes,
         "mu_bar_sliding": s.friction.sliding, "mu_bar_rolling": s.friction.rolling, "mu_bar_total": s.friction.total(),
         "tau_c": tau_c, "mu_bar_eq13": (tau_c / 5.0).asinh(),
-        "cycles": s.info.cycles, "residual": s.info.residual(), "load_error": s.info.load_error,
+        "cycles": s.info.cycles, "newton_steps": s.info.newton_steps,
+        "residual": s.info.residual(), "load_error": s.info.load_error,
         "residual_history": s.info.residual_history, "seconds": s.info.seconds,
     })
 }
@@ -112,7 +113,7 @@ fn summary_text(problem: &Problem, s: &PointSolution, tau_c: f64) -> String {
         "case        M = {:.4}, L = {:.4}, S-bar = {:.4e}, D = {:.4}, S = {}\n\
          groups      alpha-bar = {:.4}, lambda = {:.4e}, kappa = {:.4}, N = {:.4e}\n\
          physics     {:?}, {:?}, {:?}\n\
-         grid        {} x {}, {} cycles, residual {:.2e}, load error {:.1e}, {:.2} s\n\
+         grid        {} x {}, {} cycles{}, residual {:.2e}, load error {:.1e}, {:.2} s\n\
          film        Hc = {:.5e} (Moes {:.4}), Hmin = {:.5e} (Moes {:.4})  [H = h/c]\n\
          friction    mu-bar sliding = {:.4}, rolling = {}, total = {:.4}\n\
          mastercurve tau_c = {:.4e}, Eq. (13) asinh(tau_c/5) = {:.4}\n",
@@ -131,6 +132,10 @@ fn summary_text(problem: &Problem, s: &PointSolution, tau_c: f64) -> String {
         s.grid.nx,
         s.grid.ny,
         s.info.cycles,
+        match s.info.newton_steps {
+            0 => String::new(),
+            n => format!(" + {n} Newton steps"),
+        },
         s.info.residual(),
         s.info.load_error,
         s.info.seconds,

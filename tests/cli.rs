@@ -166,6 +166,8 @@ fn failed_solve_exits_non_zero_with_the_history() {
         "5",
         "--max-cycles",
         "2",
+        "--newton-steps",
+        "0",
         "-q",
     ]);
     assert_eq!(code, 1);

@@ -196,11 +196,23 @@ fn hard_case_narrow_ellipse_at_3_gpa() {
 }
 
 #[test]
-#[ignore = "known failure: 5P4E at 40 C has L = 36..57 and the multigrid diverges above L = 25 (see issue 3 notes)"]
 fn hard_case_5p4e_at_3_gpa() {
+    // M = 192, L = 49.9, alpha-bar = 105: the multigrid cycles stall at a residual ~5e-2
+    // (docs/hard-cases.md) and the Newton finish on the finest level converges it. Level 5:
+    // its ~3000 pressurised nodes make a dense Newton system of seconds; level 6 (~14000)
+    // takes minutes per step, beyond what a test should cost.
     let p = problem(&physical("5p4e", 40.0, 3e9, 7.0, 0.005, 6e6, 1.0));
-    let s = solve(&p, &Params::at_level(6), None).unwrap();
+    assert!((p.groups.l - 49.92).abs() < 0.01, "L = {}", p.groups.l);
+    let s = solve(&p, &Params::at_level(5), None).unwrap();
     assert_sound(&s, "5P4E, 3 GPa, 40 C");
+    // The converged level-5 solution agrees with what plain relaxation (3000 sweeps, no
+    // coarse grids, residual 5.5e-5) reached: central H 0.2095 (docs/hard-cases.md); the
+    // 1e-3 allows for that run's unconverged residual.
+    assert!(
+        (s.film.h_central - 0.2095).abs() < 1e-3,
+        "H_c = {}",
+        s.film.h_central
+    );
 }
 
 #[test]
@@ -209,6 +221,7 @@ fn failure_is_a_typed_error_with_the_residual_history() {
     let params = Params {
         level: 5,
         max_cycles: 2,
+        newton_steps: 0,
         ..Params::default()
     };
     match solve(&p, &params, None) {

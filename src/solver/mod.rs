@@ -3,7 +3,9 @@
 
 pub mod banded;
 pub mod deformation;
+pub(crate) mod dense;
 pub mod grid;
 pub mod line;
+pub(crate) mod line_search;
 pub mod output;
 pub mod point;

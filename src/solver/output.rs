@@ -38,7 +38,10 @@ impl Friction {
 pub struct Info {
     /// Multigrid cycles on the finest level (after the full-multigrid start).
     pub cycles: usize,
-    /// Residual norm after each finest-level cycle.
+    /// Newton steps that finished a point-contact solve whose cycles stalled (0 when the
+    /// cycles converged, and for the line contact, whose solver is Newton throughout).
+    pub newton_steps: usize,
+    /// Residual norm after each finest-level cycle, then after each Newton step.
     pub residual_history: Vec<f64>,
     /// Relative force-balance error `|int P - target| / target` at the end.
     pub load_error: f64,

@@ -29,7 +29,6 @@
 //! The domain defaults to `-4.5 <= X <= 1.5` ([`LineDomain::default`]); level `n` has
 //! `2^(n+1)` intervals, so `X = 0` is a node of every level.
 
-mod dense;
 mod friction;
 mod kernel;
 mod level;
@@ -282,6 +281,7 @@ pub fn solve(
         film,
         friction,
         info: Info {
+            newton_steps: 0,
             cycles,
             residual_history: history,
             load_error,

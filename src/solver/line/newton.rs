@@ -12,14 +12,12 @@
 //! The Jacobian is assembled exactly except for the local derivatives of the coefficient
 //! `eps(P, H, dP/dX)`, which are central differences of that scalar function.
 
-use super::dense;
 use super::level::{Level, Model, LOAD};
+use crate::solver::{dense, line_search};
 
 /// Relative step of the local finite differences of `eps` (central differences: truncation
 /// ~ 1e-12 relative, round-off ~ 1e-10 relative; the Newton step tolerates far more).
 const FD_REL: f64 = 1e-5;
-/// Smallest damping factor tried by the line search.
-const MIN_DAMPING: f64 = 1.0 / 256.0;
 
 /// `eps = rho H^3 / (eta_eff lambda)` at one node, as [`Level::update_coefficients`] forms it.
 fn eps_at(m: &Model, p: f64, h: f64, slope: f64) -> f64 {
@@ -227,9 +225,9 @@ pub(crate) fn iterate(
     let mut scale = row_scales(level);
     let mut ev = evaluate(level, model, *h0, &scale);
     for it in 1..=max_iter {
-        let mut jac = jacobian(level, model, &scale);
+        let jac = jacobian(level, model, &scale);
         let mut step: Vec<f64> = ev.phi.iter().map(|v| -v).collect();
-        if !dense::solve(&mut jac, &mut step, n) {
+        if !dense::solve(&jac, &mut step, n) {
             return Outcome {
                 converged: false,
                 iterations: it,
@@ -238,19 +236,13 @@ pub(crate) fn iterate(
         // Backtracking on |phi|: halve the step until it decreases (or the smallest damping).
         let p_old = level.p.clone();
         let h0_old = *h0;
-        let mut omega = 1.0;
-        loop {
+        line_search::backtrack(ev.norm, |omega| {
             for i in 1..n {
                 level.p[i] = (p_old[i] + omega * step[i - 1]).max(0.0);
             }
             *h0 = h0_old + omega * step[n - 1];
-            let trial = evaluate(level, model, *h0, &scale);
-            let ok = trial.norm.is_finite() && trial.norm < (1.0 - 1e-4 * omega) * ev.norm;
-            if ok || omega <= MIN_DAMPING {
-                break;
-            }
-            omega *= 0.5;
-        }
+            evaluate(level, model, *h0, &scale).norm
+        });
         scale = row_scales(level);
         ev = evaluate(level, model, *h0, &scale);
         let residual = level.residual_norm();
