@@ -17,7 +17,7 @@ pub struct AccuracyArgs {
     #[arg(long, default_value_t = 1)]
     pub repeats: usize,
     /// Leave out the line contact of Fig. 7 (studied 2 levels finer than the point
-    /// contacts; its level 10 takes about 20 s, its dense Newton solve is O(n^3)).
+    /// contacts; its level 10 takes about 1.5 s, its dense Newton solve is O(n^3)).
     #[arg(long = "no-line")]
     pub no_line: bool,
     /// Output folder.

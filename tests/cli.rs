@@ -26,12 +26,15 @@ fn solve_json_has_every_documented_key() {
         "mu_bar_total",
         "tau_c",
         "cycles",
+        "newton_steps",
         "residual",
         "seconds",
     ] {
         assert!(v.get(key).is_some(), "missing key {key}");
     }
     assert_eq!(v["level"], 4);
+    // A light case: the cycles converge by themselves and the Newton finish never starts.
+    assert_eq!(v["newton_steps"], 0);
     assert!((v["m"].as_f64().unwrap() - 100.0).abs() < 1e-9);
 }
 

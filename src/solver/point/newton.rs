@@ -5,10 +5,13 @@
 //! complementarity form of Reynolds with cavitation, `min(P, r / c) = 0` with `r = f - L(P)`
 //! the residual of [`Level::residual`] and `c` the magnitude of its own diagonal (so `r / c`
 //! is a pressure): either `P = 0` and the fluid would cavitate, or `P > 0` and Reynolds
-//! holds. Plus the force balance. Rows whose `min` picks `P` give `dP = -P` directly; the
-//! others form a dense system, full because every pressure moves every film value through
-//! the elastic kernel, factorised by [`dense::solve`]. Its size is the number of pressurised
-//! nodes, so the iteration is for the coarser levels only ([`Limits::unknowns`]).
+//! holds. Plus the force balance. The unknowns of a step are the pressurised nodes and the
+//! dry ones whose residual asks for pressure (`r / c < 0`), each with its Reynolds row
+//! (a pressurised node that should cavitate is lowered by the step and projected on
+//! `P >= 0`, not zeroed at once); the other nodes stay at `P = 0`. The system is full,
+//! because every pressure moves every film value through the elastic kernel, and factorised
+//! by [`dense::solve`]; its size, the number of pressurised nodes, keeps the iteration to the
+//! coarser levels ([`Limits::unknowns`]).
 //!
 //! The Jacobian is exact except for the local derivatives of the coefficients
 //! `eps_x(P, H)`, `eps_y(P, H)` and `rho(P)`, which are central differences of those scalar
@@ -129,33 +132,23 @@ pub(crate) fn iterate(
             converged: false,
             iterations: it - 1,
         };
-        // Reynolds rows: the nodes whose `min` picks the residual (a node at `P = 0` whose
-        // residual asks for pressure joins them).
+        // Reynolds rows: the pressurised nodes and the dry ones whose residual asks for
+        // pressure; the others stay dry.
         let active: Vec<usize> = (1..g.ny)
             .flat_map(|j| (1..g.nx).map(move |i| g.idx(i, j)))
-            .filter(|&k| level.p[k] > ev.phi[k] || (level.p[k] > 0.0 && level.p[k] == ev.phi[k]))
+            .filter(|&k| level.p[k] > 0.0 || ev.phi[k] < 0.0)
             .collect();
         let n = active.len() + 1;
         if n > limits.unknowns {
             return stop;
         }
-        // The other interior nodes move to P = 0.
         let mut column = vec![usize::MAX; g.len()];
-        let mut fixed = vec![0.0; g.len()];
-        for j in 1..g.ny {
-            for i in 1..g.nx {
-                let k = g.idx(i, j);
-                fixed[k] = -level.p[k];
-            }
-        }
         for (r, &k) in active.iter().enumerate() {
             column[k] = r;
-            fixed[k] = 0.0;
         }
-        let (jac, rhs_fixed) = jacobian(level, model, &scale, &active, &column, &fixed);
+        let jac = jacobian(level, model, &scale, &active, &column);
         let mut step: Vec<f64> = active.iter().map(|&k| -ev.phi[k]).collect();
         step.push(-ev.load);
-        step.iter_mut().zip(&rhs_fixed).for_each(|(s, f)| *s -= f);
         if !dense::solve(&jac, &mut step, n) {
             return stop;
         }
@@ -166,11 +159,9 @@ pub(crate) fn iterate(
             for j in 1..g.ny {
                 for i in 1..g.nx {
                     let k = g.idx(i, j);
-                    let dp = match column[k] {
-                        usize::MAX => fixed[k],
-                        c => step[c],
-                    };
-                    level.p[k] = (p_old[k] + omega * dp).max(0.0);
+                    if let Some(&dp) = step.get(column[k]) {
+                        level.p[k] = (p_old[k] + omega * dp).max(0.0);
+                    }
                 }
             }
             *h0 = h0_old + omega * step[n - 1];
@@ -201,15 +192,14 @@ pub(crate) fn iterate(
 }
 
 /// The Jacobian of the active rows (row-major `n x n`, the last row and column the load and
-/// `Delta`), and what the fixed moves `fixed` of the other nodes add to each row.
+/// `Delta`); `column[k]` is node `k`'s unknown, `usize::MAX` for a node that stays dry.
 fn jacobian(
     level: &Level,
     model: &Model,
     scale: &[f64],
     active: &[usize],
     column: &[usize],
-    fixed: &[f64],
-) -> (Vec<f64>, Vec<f64>) {
+) -> Vec<f64> {
     let g = level.grid;
     let n = active.len() + 1;
     let kern = level.deformation.kernel();
@@ -224,7 +214,6 @@ fn jacobian(
     }
     let (rx2, ry2) = (0.5 / (g.hx * g.hx), 0.5 / (g.hy * g.hy));
     let mut jac = vec![0.0; n * n];
-    let mut rhs = vec![0.0; n];
     // Scratch: d L / d P_m over the whole grid for one row (sparse local part + dense part).
     let mut full = vec![0.0; g.len()];
     let (px, nodes) = (g.px() as isize, g.len());
@@ -279,19 +268,14 @@ fn jacobian(
         for m in 0..nodes {
             let (mi, mj) = ((m as isize) % px, (m as isize) / px);
             let on_grid = mi > 0 && mj > 0 && (mi as usize) < g.nx && (mj as usize) < g.ny;
-            if !on_grid || (column[m] == usize::MAX && fixed[m] == 0.0) {
+            if !on_grid || column[m] == usize::MAX {
                 continue;
             }
             let mut v = full[m];
             for &(ki, kj, gh) in &dense_w {
                 v += gh * kern.at(ki - mi, kj - mj);
             }
-            v *= inv;
-            if column[m] == usize::MAX {
-                rhs[r] += v * fixed[m];
-            } else {
-                row[column[m]] = v;
-            }
+            row[column[m]] = v * inv;
         }
         row[n - 1] = d_delta * inv;
     }
@@ -300,12 +284,7 @@ fn jacobian(
     for r in 0..n - 1 {
         jac[(n - 1) * n + r] = wgt;
     }
-    for m in 0..nodes {
-        if column[m] == usize::MAX && fixed[m] != 0.0 {
-            rhs[n - 1] += wgt * fixed[m];
-        }
-    }
-    (jac, rhs)
+    jac
 }
 
 #[cfg(test)]
@@ -380,12 +359,7 @@ mod tests {
         for (r, &k) in active.iter().enumerate() {
             column[k] = r;
         }
-        let fixed = vec![0.0; g.len()];
-        let (jac, extra) = jacobian(&level, &model, &scale, &active, &column, &fixed);
-        assert!(
-            extra.iter().all(|&v| v == 0.0),
-            "no fixed moves, nothing added"
-        );
+        let jac = jacobian(&level, &model, &scale, &active, &column);
         let n = active.len() + 1;
         // A direction with every node moving differently, and Delta moving too.
         let v: Vec<f64> = (0..n)
