@@ -6,9 +6,7 @@ use crate::solver::output::{Film, Friction};
 
 /// Central film (at `X = Y = 0`) and minimum film, in `H = h/c` and in Moes units.
 pub(crate) fn film(level: &Level, moes_scale: f64) -> Film {
-    let g = &level.grid;
-    let (i, j) = g.nearest(0.0, 0.0);
-    let h_central = level.h[g.idx(i, j)];
+    let h_central = level.h_central();
     let h_min = level.h.iter().cloned().fold(f64::INFINITY, f64::min);
     Film {
         h_central,

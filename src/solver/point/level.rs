@@ -12,6 +12,9 @@ use crate::solver::grid::Grid;
 /// near it (it would need `alpha-bar P > 700`).
 const LN_ETA_MAX: f64 = 700.0;
 
+/// The dimensionless load of the force balance, Eq. (7): `int P dX dY = 2 pi / 3`.
+pub(crate) const LOAD: f64 = 2.0 * std::f64::consts::PI / 3.0;
+
 /// The parts of the dimensionless problem the discrete equations use.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Model {
@@ -57,6 +60,25 @@ impl Model {
         self.viscosity.ln_eta_bar(p).min(LN_ETA_MAX).exp()
     }
 
+    /// The coefficients of Eq. (1) at one node of pressure `p` and film `h`:
+    /// `(rho H^3 / (eta_x lambda), kappa^2 rho H^3 / (eta_y lambda), rho)`.
+    #[inline]
+    pub fn coefficients(&self, p: f64, h: f64) -> (f64, f64, f64) {
+        // rho_bar(P <= 0) = 1 exactly: not evaluated there, like the viscosity.
+        let rho = if self.density.is_incompressible() || p <= 0.0 {
+            1.0
+        } else {
+            self.density.rho_bar(p)
+        };
+        let eta = self.eta(p);
+        let scale = rho * self.inv_lambda;
+        (
+            scale * self.rheology.conductance_x(h, eta, self.n_s),
+            scale * self.kappa2 * self.rheology.conductance_y(h, eta, self.n_s),
+            rho,
+        )
+    }
+
     /// Gap geometry `S X^2 + (1 - S) Y^2` of Eq. (6).
     pub fn geometry(&self, x: f64, y: f64) -> f64 {
         self.shape * x * x + (1.0 - self.shape) * y * y
@@ -86,7 +108,7 @@ pub(crate) struct Level {
     pub ex: Vec<f64>,
     /// `kappa^2 rho H^3 / (eta_y lambda)` at the nodes.
     pub ey: Vec<f64>,
-    /// `rho` at the nodes (all ones and never touched when incompressible).
+    /// `rho` at the nodes (all ones when incompressible).
     pub rho: Vec<f64>,
     /// `rho H` at the nodes.
     pub rh: Vec<f64>,
@@ -103,7 +125,7 @@ impl Level {
             hrhs: grid.sample(|x, y| model.geometry(x, y)),
             w: vec![0.0; n],
             pold: vec![0.0; n],
-            rg: -2.0 * std::f64::consts::PI / 3.0,
+            rg: -LOAD,
             ex: vec![0.0; n],
             ey: vec![0.0; n],
             rho: vec![1.0; n],
@@ -122,22 +144,12 @@ impl Level {
 
     /// Coefficients of Eq. (1) from the current `P` and `H`.
     pub fn update_coefficients(&mut self, m: &Model) {
-        let compressible = !m.density.is_incompressible();
         for k in 0..self.p.len() {
-            let p = self.p[k];
             let h = self.h[k];
-            let eta = m.eta(p);
-            let rho = if compressible {
-                // rho_bar(P <= 0) = 1 exactly: not evaluated there, like the viscosity.
-                let r = if p > 0.0 { m.density.rho_bar(p) } else { 1.0 };
-                self.rho[k] = r;
-                r
-            } else {
-                1.0
-            };
-            let scale = rho * m.inv_lambda;
-            self.ex[k] = scale * m.rheology.conductance_x(h, eta, m.n_s);
-            self.ey[k] = scale * m.kappa2 * m.rheology.conductance_y(h, eta, m.n_s);
+            let (ex, ey, rho) = m.coefficients(self.p[k], h);
+            self.ex[k] = ex;
+            self.ey[k] = ey;
+            self.rho[k] = rho;
             self.rh[k] = rho * h;
         }
     }
@@ -208,6 +220,12 @@ impl Level {
             }
         }
         (sum / ((g.nx - 1) * (g.ny - 1)) as f64, at)
+    }
+
+    /// Film `H` at the node nearest the contact centre `X = Y = 0`.
+    pub fn h_central(&self) -> f64 {
+        let (i, j) = self.grid.nearest(0.0, 0.0);
+        self.h[self.grid.idx(i, j)]
     }
 
     /// Force-balance defect `sum P hx hy + rg`.

@@ -23,7 +23,7 @@ use crate::physics::case::Problem;
 use crate::physics::film::hc_eq10;
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{Film, Friction, Info, SolveError};
-use level::Model;
+use level::{Model, LOAD};
 use multigrid::Hierarchy;
 use std::time::Instant;
 
@@ -233,7 +233,6 @@ pub fn solve(
     let h0 = hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0;
     let mut mg = Hierarchy::new(model, &params.domain, params, h0);
     let top = mg.levels.len() - 1;
-    let target = 2.0 * std::f64::consts::PI / 3.0;
 
     // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
     // from the interpolated solution of the one below.
@@ -263,19 +262,16 @@ pub fn solve(
             mg.cycle(k);
             let (residual, worst_at) = mg.residual_norm(k);
             let level = &mg.levels[k];
-            let load_error = (level.load_defect() / target).abs();
+            let load_error = (level.load_defect() / LOAD).abs();
             let dp = mean_change(&level.p, &before);
             if let Some(obs) = observer.as_mut() {
-                let (i, j) = level.grid.nearest(0.0, 0.0);
-                let h_central = level.h[level.grid.idx(i, j)];
-                let level = params.coarsest_level + k as u32;
                 obs(&Progress {
-                    level,
+                    level: params.coarsest_level + k as u32,
                     cycle,
                     residual,
                     load_error,
                     pressure_change: dp,
-                    h_central,
+                    h_central: level.h_central(),
                     worst_at,
                     newton: false,
                 });
@@ -313,6 +309,7 @@ pub fn solve(
     }
     // The cycles stalled or ran out: finish on the finest level by Newton when its system
     // is small enough.
+    let cycles = history.len();
     let mut newton_steps = 0;
     if !converged && params.newton_steps > 0 {
         let model = mg.model;
@@ -329,18 +326,17 @@ pub fn solve(
                 tolerance: params.tolerance,
                 load_tolerance: params.load_tolerance,
             },
-            &mut |level: &level::Level, residual: f64, load_error: f64| {
-                history.push(residual);
+            &mut |level: &level::Level, step: &newton::Step| {
+                history.push(step.residual);
                 if let Some(obs) = observer.as_mut() {
-                    let (i, j) = level.grid.nearest(0.0, 0.0);
                     obs(&Progress {
                         level: params.level,
                         cycle: history.len(),
-                        residual,
-                        load_error,
+                        residual: step.residual,
+                        load_error: step.load_error,
                         pressure_change: mean_change(&level.p, &before),
-                        h_central: level.h[level.grid.idx(i, j)],
-                        worst_at: level.residual_norm().1,
+                        h_central: level.h_central(),
+                        worst_at: step.worst_at,
                         newton: true,
                     });
                 }
@@ -352,8 +348,7 @@ pub fn solve(
         converged = outcome.converged;
     }
     let fine = mg.finest();
-    let load_error = (fine.load_defect() / target).abs();
-    let cycles = history.len() - newton_steps;
+    let load_error = (fine.load_defect() / LOAD).abs();
     if !converged {
         return Err(SolveError::NotConverged {
             cycles,

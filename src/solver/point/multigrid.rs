@@ -118,7 +118,7 @@ impl Hierarchy {
         let g = level.grid;
         level.hrhs = g.sample(|x, y| model.geometry(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
-        level.rg = -2.0 * std::f64::consts::PI / 3.0;
+        level.rg = -super::level::LOAD;
     }
 
     /// Film, coefficients and residual norm of level `k` for its current pressure, and where

@@ -17,30 +17,11 @@
 //! `eps_x(P, H)`, `eps_y(P, H)` and `rho(P)`, which are central differences of those scalar
 //! functions.
 
-use super::level::{Level, Model};
+use super::level::{Level, Model, LOAD};
 use crate::solver::{dense, line_search};
 
 /// Relative step of the local finite differences.
 const FD_REL: f64 = 1e-5;
-/// Load `2 pi / 3` of the force balance, Eq. (7).
-const LOAD: f64 = 2.0 * std::f64::consts::PI / 3.0;
-
-/// `(eps_x, eps_y, rho)` at one node, as [`Level::update_coefficients`] forms them.
-fn coefficients(m: &Model, p: f64, h: f64) -> (f64, f64, f64) {
-    let rho = if m.density.is_incompressible() || p <= 0.0 {
-        1.0
-    } else {
-        m.density.rho_bar(p)
-    };
-    let eta = m.eta(p);
-    let s = rho * m.inv_lambda;
-    (
-        s * m.rheology.conductance_x(h, eta, m.n_s),
-        s * m.kappa2 * m.rheology.conductance_y(h, eta, m.n_s),
-        rho,
-    )
-}
-
 /// Central difference of the three coefficients in one argument.
 fn central(f: impl Fn(f64) -> (f64, f64, f64), x: f64, scale: f64) -> [f64; 3] {
     let d = FD_REL * x.abs().max(scale);
@@ -102,6 +83,16 @@ pub(crate) struct Outcome {
     pub iterations: usize,
 }
 
+/// What [`iterate`] reports after each step.
+pub(crate) struct Step {
+    /// Mean absolute Reynolds residual.
+    pub residual: f64,
+    /// `(X, Y)` of the largest residual.
+    pub worst_at: (f64, f64),
+    /// Relative force-balance error.
+    pub load_error: f64,
+}
+
 /// When [`iterate`] stops.
 pub(crate) struct Limits {
     /// Most steps.
@@ -115,14 +106,13 @@ pub(crate) struct Limits {
 }
 
 /// Newton steps on `level` (its own equations: the finest level) from its current pressure
-/// and `h0` until both tolerances are met, within `limits`. `report(level, residual,
-/// load_error)` hears of every step.
+/// and `h0` until both tolerances are met, within `limits`. `report` hears of every step.
 pub(crate) fn iterate(
     level: &mut Level,
     model: &Model,
     h0: &mut f64,
     limits: &Limits,
-    report: &mut dyn FnMut(&Level, f64, f64),
+    report: &mut dyn FnMut(&Level, &Step),
 ) -> Outcome {
     let g = level.grid;
     let mut scale = row_scales(level);
@@ -169,9 +159,16 @@ pub(crate) fn iterate(
         });
         scale = row_scales(level);
         ev = evaluate(level, model, *h0, &scale);
-        let (residual, _) = level.residual_norm();
+        let (residual, worst_at) = level.residual_norm();
         let load_error = ev.load.abs();
-        report(level, residual, load_error);
+        report(
+            level,
+            &Step {
+                residual,
+                worst_at,
+                load_error,
+            },
+        );
         if !residual.is_finite() {
             return Outcome {
                 converged: false,
@@ -209,8 +206,8 @@ fn jacobian(
     let mut d_dh = vec![[0.0; 3]; g.len()];
     for k in 0..g.len() {
         let (pk, hk) = (p[k], h[k]);
-        d_dp[k] = central(|v| coefficients(model, v, hk), pk, 1e-3);
-        d_dh[k] = central(|v| coefficients(model, pk, v), hk, 1e-6);
+        d_dp[k] = central(|v| model.coefficients(v, hk), pk, 1e-3);
+        d_dh[k] = central(|v| model.coefficients(pk, v), hk, 1e-6);
     }
     let (rx2, ry2) = (0.5 / (g.hx * g.hx), 0.5 / (g.hy * g.hy));
     let mut jac = vec![0.0; n * n];
