@@ -5,7 +5,7 @@
 //! full EHL solve of the same contact (the physics of Figs. 4-7) is printed beside it.
 
 use crate::cli::{check_level, lubricant_spec, physics, DensityArg, ViscosityArg};
-use crate::report::{flag_error, progress_printer, summary_json};
+use crate::report::{flag_error, progress_printer, rolling_text, summary_json};
 use anyhow::{bail, Result};
 use clap::Args;
 use repro::artefacts::fit::{mastercurve, PAPER_C};
@@ -249,10 +249,7 @@ fn text(
             s.grid.ny,
             s.friction.sliding,
             solve_mu,
-            s.friction
-                .rolling
-                .map(|r| format!("{r:.4}"))
-                .unwrap_or_else(|| "not computed".into()),
+            rolling_text(s.friction.rolling),
             s.film.hc_moes,
             s.info.cycles,
             s.info.seconds,

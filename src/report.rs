@@ -24,6 +24,14 @@ pub(crate) fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
     }
 }
 
+/// The rolling part of the friction as printed: four decimals, or "not computed" when the
+/// solve was asked to skip it.
+pub(crate) fn rolling_text(rolling: Option<f64>) -> String {
+    rolling
+        .map(|r| format!("{r:.4}"))
+        .unwrap_or_else(|| "not computed".into())
+}
+
 /// Prefixes a case error with the flag it names.
 pub(crate) fn flag_error(e: repro::physics::case::CaseError) -> anyhow::Error {
     use repro::physics::case::CaseError;
@@ -104,11 +112,7 @@ pub(crate) fn summary_json(
 fn summary_text(problem: &Problem, s: &PointSolution, tau_c: f64) -> String {
     let g = &problem.groups;
     let ph = problem.physics();
-    let rolling = s
-        .friction
-        .rolling
-        .map(|r| format!("{r:.4}"))
-        .unwrap_or_else(|| "not computed".into());
+    let rolling = rolling_text(s.friction.rolling);
     format!(
         "case        M = {:.4}, L = {:.4}, S-bar = {:.4e}, D = {:.4}, S = {}\n\
          groups      alpha-bar = {:.4}, lambda = {:.4e}, kappa = {:.4}, N = {:.4e}\n\

@@ -2,7 +2,7 @@
 //! printed with the same keys.
 
 use crate::cli::SolveArgs;
-use crate::report::flag_error;
+use crate::report::{flag_error, rolling_text};
 use anyhow::{bail, Context as _, Result};
 use repro::artefacts::csv;
 use repro::physics::case::Spec;
@@ -121,11 +121,7 @@ fn summary_json(problem: &LineProblem, level: u32, s: &LineSolution) -> serde_js
 fn summary_text(problem: &LineProblem, s: &LineSolution) -> String {
     let g = &problem.groups;
     let tau_c = problem.tau_c();
-    let rolling = s
-        .friction
-        .rolling
-        .map(|r| format!("{r:.4}"))
-        .unwrap_or_else(|| "not computed".into());
+    let rolling = rolling_text(s.friction.rolling);
     format!(
         "line case   M = {:.4}, L = {:.4}, S-bar = {:.4e}, S = {}\n\
          groups      alpha-bar = {:.4}, lambda = {:.4e}, N = {:.4e}\n\
