@@ -16,8 +16,13 @@ use std::io::IsTerminal;
 pub(crate) fn progress_printer(quiet: bool) -> impl FnMut(&Progress) {
     move |p: &Progress| {
         if !quiet {
+            let krylov = if p.newton {
+                format!(", {} GMRES iterations", p.krylov_iterations)
+            } else {
+                String::new()
+            };
             eprintln!(
-                "  level {:>2} {} {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}",
+                "  level {:>2} {} {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}{krylov}",
                 p.level, if p.newton { "newton" } else { "cycle " }, p.cycle, p.residual, p.worst_at.0, p.worst_at.1, p.pressure_change, p.load_error, p.h_central
             );
         }

@@ -33,15 +33,45 @@ impl Friction {
     }
 }
 
+/// Which method produced the solution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Method {
+    /// The point contact's multigrid cycles alone.
+    Cycles,
+    /// The point contact's Newton-Krylov finish, grid-sequenced, after the cycles stalled
+    /// or diverged.
+    NewtonKrylov,
+    /// The line contact's nested damped Newton iteration.
+    Newton,
+}
+
+impl Method {
+    /// The name printed and written to JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Cycles => "cycles",
+            Method::NewtonKrylov => "newton-krylov",
+            Method::Newton => "newton",
+        }
+    }
+}
+
 /// How the solve went.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Info {
+    /// What converged the solve.
+    pub method: Method,
     /// Multigrid cycles on the finest level (after the full-multigrid start).
     pub cycles: usize,
-    /// Newton steps that finished a point-contact solve whose cycles stalled (0 when the
-    /// cycles converged, and for the line contact, whose solver is Newton throughout).
+    /// Newton steps of the point contact's Newton-Krylov finish, over every level of its
+    /// grid sequence (0 when the cycles converged, and for the line contact, whose solver
+    /// is Newton throughout).
     pub newton_steps: usize,
-    /// Residual norm after each finest-level cycle, then after each Newton step.
+    /// GMRES iterations (Jacobian-vector products) over all those Newton steps.
+    pub krylov_iterations: usize,
+    /// Residual norm after each finest-level cycle, then after each Newton step of the
+    /// finish (on every level of its grid sequence).
     pub residual_history: Vec<f64>,
     /// Relative force-balance error `|int P - target| / target` at the end.
     pub load_error: f64,

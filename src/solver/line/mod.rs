@@ -36,7 +36,7 @@ mod newton;
 mod transfer;
 
 use crate::physics::line_contact::{LineFilmFormula, LineHertz, LineProblem};
-use crate::solver::output::{Film, Friction, Info, SolveError};
+use crate::solver::output::{Film, Friction, Info, Method, SolveError};
 use level::{Level, Model, LOAD};
 use std::time::Instant;
 
@@ -281,7 +281,9 @@ pub fn solve(
         film,
         friction,
         info: Info {
+            method: Method::Newton,
             newton_steps: 0,
+            krylov_iterations: 0,
             cycles,
             residual_history: history,
             load_error,

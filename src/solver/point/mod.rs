@@ -13,6 +13,7 @@
 //! ([`Domain::default`]); level `n` has `2^(n+1)` intervals per direction.
 
 mod friction;
+mod jacobian;
 mod level;
 mod multigrid;
 mod newton;
@@ -22,7 +23,7 @@ mod transfer;
 use crate::physics::case::Problem;
 use crate::physics::film::hc_eq10;
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::{Film, Friction, Info, SolveError};
+use crate::solver::output::{Film, Friction, Info, Method, SolveError};
 use level::{Model, LOAD};
 use multigrid::Hierarchy;
 use std::time::Instant;
@@ -79,17 +80,25 @@ pub struct Params {
     pub pressure_tolerance: f64,
     /// Convergence: relative force-balance error. Default 1e-4.
     pub load_tolerance: f64,
-    /// Most Newton steps that finish a solve on the finest level when its cycles stall or
-    /// run out ([`newton`]); 0 turns the finish off. Default 20: from a stalled cycle
-    /// (residual ~5e-2) the 5P4E hard case at level 5 converges in 8.
+    /// Most Newton steps on each level of the Newton-Krylov finish ([`newton`]) that takes
+    /// over when the cycles stall, diverge or run out; 0 turns the finish off. Default 30:
+    /// the 5P4E hard case converges in 8-15 per level.
     pub newton_steps: usize,
-    /// Largest Newton system (pressurised nodes + 1) the finish will factorise. Default 8000:
-    /// the dense Jacobian takes `8 n^2` bytes (0.5 GB) and ~7 s per factorisation on two
-    /// cores, so the finish serves level 5 (~3000 nodes in contact) and light loads at level
-    /// 6, not the level-7 sweeps.
-    pub newton_max_unknowns: usize,
+    /// Level at which the finish's grid sequence starts (clamped to the hierarchy): the
+    /// finish converges there, from that level's own cycles, then on each finer level from
+    /// the interpolated solution of the one below, never from the stalled or diverged
+    /// state of the finest cycles. Default 5 (64 x 64): there the cycles of the hardest
+    /// cases stall rather than diverge, and a Newton step costs milliseconds.
+    pub newton_start_level: u32,
+    /// Half-width in cells of the box of elastic-kernel entries the finish's sparse
+    /// preconditioner keeps. Default 2 (5 x 5): the feasibility study of the 5P4E Newton
+    /// systems measured 8 GMRES iterations to 1e-2 at level 7 with it, none converging with
+    /// a 3 x 3 box.
+    pub box_radius: usize,
+    /// Most GMRES iterations per Newton step. Default 200.
+    pub krylov_iterations: usize,
     /// Cycles without the residual halving after which the cycles are taken as stalled and
-    /// the Newton finish starts. Default 15.
+    /// the Newton-Krylov finish starts. Default 15.
     pub stall_cycles: usize,
     /// Compute the rolling (Poiseuille) part of the friction. Default true.
     pub rolling_friction: bool,
@@ -116,8 +125,10 @@ impl Default for Params {
             tolerance: 1e-6,
             pressure_tolerance: 3e-7,
             load_tolerance: 1e-4,
-            newton_steps: 20,
-            newton_max_unknowns: 8000,
+            newton_steps: 30,
+            newton_start_level: 5,
+            box_radius: 2,
+            krylov_iterations: 200,
             stall_cycles: 15,
             rolling_friction: true,
             require_positive_film: true,
@@ -152,9 +163,11 @@ pub struct Progress {
     pub h_central: f64,
     /// `(X, Y)` of the largest residual.
     pub worst_at: (f64, f64),
-    /// Whether this was a step of the Newton finish (its `cycle` counts on from the
-    /// cycles').
+    /// Whether this was a step of the Newton-Krylov finish (its `cycle` counts the steps
+    /// on its level).
     pub newton: bool,
+    /// GMRES iterations of the Newton step (0 for a cycle).
+    pub krylov_iterations: usize,
 }
 
 /// A converged point-contact solution.
@@ -197,12 +210,171 @@ fn mean_change(p: &[f64], before: &[f64]) -> f64 {
         / p.len() as f64
 }
 
-/// Whether the Newton finish would take `level` on: it is enabled and the pressurised nodes
-/// fit its system.
-fn newton_fits(level: &level::Level, params: &Params) -> bool {
-    params.newton_steps > 0
-        && level.p.iter().filter(|&&p| p > 0.0).count() < params.newton_max_unknowns
+/// A level's pressure and the film constant `Delta`: a start of the finish.
+struct State {
+    p: Vec<f64>,
+    h0: f64,
 }
+
+impl State {
+    fn of(mg: &Hierarchy, k: usize) -> Self {
+        State {
+            p: mg.levels[k].p.clone(),
+            h0: mg.h0,
+        }
+    }
+
+    fn restore(&self, mg: &mut Hierarchy, k: usize) {
+        mg.levels[k].p.copy_from_slice(&self.p);
+        mg.h0 = self.h0;
+    }
+}
+
+/// What the cycles on the top level reached.
+struct Cycles {
+    converged: bool,
+    /// Residual after each cycle.
+    history: Vec<f64>,
+    /// The state of the lowest residual.
+    best: State,
+    /// The cycle at which a non-finite value appeared, if one did.
+    non_finite: Option<usize>,
+}
+
+/// The observer's view of level `k` after a cycle that started from pressure `before`.
+fn cycle_progress(mg: &mut Hierarchy, k: usize, cycle: usize, before: &[f64]) -> Progress {
+    let (residual, worst_at) = mg.residual_norm(k);
+    let level = &mg.levels[k];
+    Progress {
+        level: level_number(level),
+        cycle,
+        residual,
+        load_error: (level.load_defect() / LOAD).abs(),
+        pressure_change: mean_change(&level.p, before),
+        h_central: level.h_central(),
+        worst_at,
+        newton: false,
+        krylov_iterations: 0,
+    }
+}
+
+/// The level number of a grid (`2^(level+1)` intervals along `X`).
+fn level_number(level: &level::Level) -> u32 {
+    level.grid.nx.trailing_zeros() - 1
+}
+
+/// V-cycles on level `k` as the top of the hierarchy until they converge, diverge, stall
+/// (when the Newton-Krylov finish can take over) or run out.
+fn converge_by_cycles(
+    mg: &mut Hierarchy,
+    k: usize,
+    params: &Params,
+    observe: &mut dyn FnMut(&Progress),
+) -> Cycles {
+    let mut history = Vec::new();
+    // The mean pressure change of each cycle: the other measure of convergence.
+    let mut changes = Vec::new();
+    let mut best = State::of(mg, k);
+    let mut best_residual = f64::INFINITY;
+    for cycle in 1..=params.max_cycles {
+        let before = mg.levels[k].p.clone();
+        mg.cycle(k);
+        let progress = cycle_progress(mg, k, cycle, &before);
+        observe(&progress);
+        let residual = progress.residual;
+        history.push(residual);
+        let level = &mg.levels[k];
+        if !residual.is_finite() || !mg.h0.is_finite() || level.p.iter().any(|v| !v.is_finite()) {
+            return Cycles {
+                converged: false,
+                history,
+                best,
+                non_finite: Some(cycle),
+            };
+        }
+        if residual < best_residual {
+            best_residual = residual;
+            best = State::of(mg, k);
+        }
+        changes.push(progress.pressure_change);
+        // A residual a thousand times above the best one seen is divergence, not noise. A
+        // stall ends the cycles only where the Newton-Krylov finish can take over;
+        // otherwise they run on (some cases converge after a long noisy stretch).
+        let stall = params.newton_steps > 0
+            && stalled(&history, params.stall_cycles)
+            && stalled(&changes, params.stall_cycles);
+        if residual > DIVERGENCE_FACTOR * best_residual || stall {
+            break;
+        }
+        if (residual < params.tolerance || progress.pressure_change < params.pressure_tolerance)
+            && progress.load_error < params.load_tolerance
+        {
+            return Cycles {
+                converged: true,
+                history,
+                best,
+                non_finite: None,
+            };
+        }
+    }
+    Cycles {
+        converged: false,
+        history,
+        best,
+        non_finite: None,
+    }
+}
+
+/// The Newton-Krylov finish on level `k` (the top of the hierarchy) from its current
+/// state; each step is reported and its residual appended to `history`.
+fn finish(
+    mg: &mut Hierarchy,
+    k: usize,
+    params: &Params,
+    observe: &mut dyn FnMut(&Progress),
+    history: &mut Vec<f64>,
+) -> newton::Outcome {
+    let model = mg.model;
+    let mut h0 = mg.h0;
+    let level = &mut mg.levels[k];
+    let mut before = level.p.clone();
+    let mut steps = 0;
+    let outcome = newton::iterate(
+        level,
+        &model,
+        &mut h0,
+        &newton::Limits {
+            steps: params.newton_steps,
+            tolerance: params.tolerance,
+            load_tolerance: params.load_tolerance,
+            box_radius: params.box_radius,
+            krylov_restart: KRYLOV_RESTART,
+            krylov_iterations: params.krylov_iterations,
+        },
+        &mut |level: &level::Level, step: &newton::Step| {
+            steps += 1;
+            history.push(step.residual);
+            observe(&Progress {
+                level: level_number(level),
+                cycle: steps,
+                residual: step.residual,
+                load_error: step.load_error,
+                pressure_change: mean_change(&level.p, &before),
+                h_central: level.h_central(),
+                worst_at: step.worst_at,
+                newton: true,
+                krylov_iterations: step.krylov_iterations,
+            });
+            before.copy_from_slice(&level.p);
+        },
+    );
+    mg.h0 = h0;
+    outcome
+}
+
+/// GMRES vectors kept before a restart: more than the preconditioned systems need (the
+/// feasibility study: 20 iterations to 1e-6 at level 7), so restarts are rare.
+const KRYLOV_RESTART: usize = 60;
 
 /// Solves `problem` with `params`; `observer` (if any) hears of every cycle and Newton step.
 pub fn solve(
@@ -233,119 +405,92 @@ pub fn solve(
     let h0 = hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0;
     let mut mg = Hierarchy::new(model, &params.domain, params, h0);
     let top = mg.levels.len() - 1;
+    let mut observe = |p: &Progress| {
+        if let Some(obs) = observer.as_mut() {
+            obs(p)
+        }
+    };
 
     // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
-    // from the interpolated solution of the one below.
+    // from the interpolated solution of the one below; each level's state after its cycles
+    // is kept as a start for the finish's grid sequence.
     {
         let l0 = &mut mg.levels[0];
         let grid = l0.grid;
         l0.p = grid.sample(crate::physics::hertz::Hertz::pressure);
     }
-    let mut history = Vec::new();
-    // The mean pressure change of each finest cycle: the other measure of convergence.
-    let mut changes = Vec::new();
-    let mut converged = false;
-    for k in 0..=top {
+    let mut starts = Vec::with_capacity(top);
+    for k in 0..top {
         mg.make_top(k);
         if k > 0 {
             mg.interpolate(k);
         }
-        // The coarsest level alone is solved once (its "cycle" is a full solve) unless it is
-        // the only level.
-        let cycles = match (k == top, k == 0) {
-            (true, _) => params.max_cycles,
-            (false, true) => 1,
-            (false, false) => params.fmg_cycles,
-        };
+        // The coarsest level alone is solved once (its "cycle" is a full solve).
+        let cycles = if k == 0 { 1 } else { params.fmg_cycles };
         for cycle in 1..=cycles {
             let before = mg.levels[k].p.clone();
             mg.cycle(k);
-            let (residual, worst_at) = mg.residual_norm(k);
-            let level = &mg.levels[k];
-            let load_error = (level.load_defect() / LOAD).abs();
-            let dp = mean_change(&level.p, &before);
-            if let Some(obs) = observer.as_mut() {
-                obs(&Progress {
-                    level: params.coarsest_level + k as u32,
-                    cycle,
-                    residual,
-                    load_error,
-                    pressure_change: dp,
-                    h_central: level.h_central(),
-                    worst_at,
-                    newton: false,
-                });
-            }
-            if k < top {
-                continue;
-            }
-            history.push(residual);
-            if !residual.is_finite() || !mg.h0.is_finite() || level.p.iter().any(|v| !v.is_finite())
-            {
-                return Err(SolveError::NonFinite {
-                    what: "pressure or residual",
-                    cycle,
-                    residual_history: history,
-                });
-            }
-            // A residual a thousand times above the best one seen is divergence, not noise.
-            let best = history.iter().cloned().fold(f64::INFINITY, f64::min);
-            changes.push(dp);
-            // A stall ends the cycles only where the Newton finish can take over; elsewhere
-            // they run on (some cases converge after a long noisy stretch).
-            let stall = stalled(&history, params.stall_cycles)
-                && stalled(&changes, params.stall_cycles)
-                && newton_fits(level, params);
-            if residual > DIVERGENCE_FACTOR * best || stall {
-                break;
-            }
-            if (residual < params.tolerance || dp < params.pressure_tolerance)
-                && load_error < params.load_tolerance
-            {
-                converged = true;
-                break;
-            }
+            observe(&cycle_progress(&mut mg, k, cycle, &before));
+        }
+        starts.push(State::of(&mg, k));
+    }
+    mg.make_top(top);
+    if top > 0 {
+        mg.interpolate(top);
+    }
+    let finest = converge_by_cycles(&mut mg, top, params, &mut observe);
+    let cycles = finest.history.len();
+    let mut history = finest.history;
+    let mut method = Method::Cycles;
+    let (mut newton_steps, mut krylov_iterations) = (0, 0);
+    let mut converged = finest.converged;
+    if !converged && params.newton_steps == 0 {
+        if let Some(cycle) = finest.non_finite {
+            return Err(SolveError::NonFinite {
+                what: "pressure or residual",
+                cycle,
+                residual_history: history,
+            });
         }
     }
-    // The cycles stalled or ran out: finish on the finest level by Newton when its system
-    // is small enough.
-    let cycles = history.len();
-    let mut newton_steps = 0;
     if !converged && params.newton_steps > 0 {
-        let model = mg.model;
-        let mut h0 = mg.h0;
-        let fine = mg.levels.last_mut().expect("a hierarchy has a level");
-        let mut before = fine.p.clone();
-        let outcome = newton::iterate(
-            fine,
-            &model,
-            &mut h0,
-            &newton::Limits {
-                steps: params.newton_steps,
-                unknowns: params.newton_max_unknowns,
-                tolerance: params.tolerance,
-                load_tolerance: params.load_tolerance,
-            },
-            &mut |level: &level::Level, step: &newton::Step| {
-                history.push(step.residual);
-                if let Some(obs) = observer.as_mut() {
-                    obs(&Progress {
-                        level: params.level,
-                        cycle: history.len(),
-                        residual: step.residual,
-                        load_error: step.load_error,
-                        pressure_change: mean_change(&level.p, &before),
-                        h_central: level.h_central(),
-                        worst_at: step.worst_at,
-                        newton: true,
-                    });
-                }
-                before.copy_from_slice(&level.p);
-            },
-        );
-        mg.h0 = h0;
-        newton_steps = outcome.iterations;
-        converged = outcome.converged;
+        // The finish, grid-sequenced: converge at the start level (its cycles, then Newton
+        // where they stall), then Newton on each finer level from the interpolated solution.
+        method = Method::NewtonKrylov;
+        starts.push(finest.best);
+        let first = (params
+            .newton_start_level
+            .clamp(params.coarsest_level, params.level)
+            - params.coarsest_level) as usize;
+        let start = &starts[first];
+        mg.make_top(first);
+        start.restore(&mut mg, first);
+        let mut level_converged = false;
+        if first < top {
+            let run = converge_by_cycles(&mut mg, first, params, &mut observe);
+            level_converged = run.converged;
+            if !level_converged {
+                run.best.restore(&mut mg, first);
+            }
+        }
+        for k in first..=top {
+            if k > first {
+                mg.make_top(k);
+                mg.interpolate(k);
+                level_converged = false;
+            }
+            if level_converged {
+                continue;
+            }
+            let outcome = finish(&mut mg, k, params, &mut observe, &mut history);
+            newton_steps += outcome.iterations;
+            krylov_iterations += outcome.krylov_iterations;
+            if !outcome.converged {
+                break;
+            }
+            level_converged = true;
+        }
+        converged = level_converged;
     }
     let fine = mg.finest();
     let load_error = (fine.load_defect() / LOAD).abs();
@@ -381,8 +526,10 @@ pub fn solve(
         film,
         friction,
         info: Info {
+            method,
             cycles,
             newton_steps,
+            krylov_iterations,
             residual_history: history,
             load_error,
             seconds: start.elapsed().as_secs_f64(),
