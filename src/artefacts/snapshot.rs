@@ -139,7 +139,7 @@ pub fn compare(target: &str, baseline: &str, new: &str) -> Vec<Mismatch> {
 
 /// The CSV files of the built targets (and `summary.csv` when `with_summary`), as names
 /// relative to the output folder.
-pub fn csv_files(built: &[super::targets::Built], with_summary: bool) -> Vec<String> {
+pub fn csv_files(built: &[super::target::Built], with_summary: bool) -> Vec<String> {
     let mut files: Vec<String> = built
         .iter()
         .flat_map(|b| b.files.iter().filter(|f| f.ends_with(".csv")).cloned())

@@ -1,8 +1,58 @@
-//! The report, `figures/index.html`: every table and figure beside the paper's claim and our
-//! result, one self-contained page that opens from disk (figures are linked by relative path,
-//! no scripts, no fonts, no network).
+//! The report of a run of every target: `figures/summary.csv` (one row per target) and
+//! `figures/index.html`, every table and figure beside the paper's claim and our result, one
+//! self-contained page that opens from disk (figures are linked by relative path, no scripts,
+//! no fonts, no network).
 
-use super::targets::Built;
+use super::csv::{opt, table};
+use super::target::{write, Built, Context};
+use super::targets::{build, target};
+
+/// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
+/// cannot be built (a solve that fails is a result, not a stop).
+pub fn build_all(names: &[&str], ctx: &Context) -> Result<Vec<Built>, String> {
+    let mut built = Vec::new();
+    for n in names {
+        built.push(build(n, ctx)?);
+    }
+    write(ctx, "summary.csv", &summary_csv(&built))?;
+    let read = |f: &str| std::fs::read_to_string(ctx.out.join(f)).ok();
+    write(ctx, "index.html", &index_html(&built, &read))?;
+    Ok(built)
+}
+
+/// `figures/summary.csv`, one row per target.
+pub fn summary_csv(built: &[Built]) -> String {
+    let header = [
+        "target",
+        "cases",
+        "solved",
+        "cached",
+        "level",
+        "fitted_c",
+        "rms_rel_dev",
+        "max_rel_dev",
+        "fitted_c_all",
+        "seconds",
+    ];
+    let rows: Vec<Vec<String>> = built
+        .iter()
+        .map(|b| {
+            vec![
+                b.name.to_string(),
+                b.cases.to_string(),
+                b.solved.map(|v| v.to_string()).unwrap_or_default(),
+                b.cached.map(|v| v.to_string()).unwrap_or_default(),
+                b.level.map(|v| v.to_string()).unwrap_or_default(),
+                opt(b.fit.map(|f| f.c)),
+                opt(b.fit.map(|f| f.rms_rel_dev)),
+                opt(b.fit.map(|f| f.max_rel_dev)),
+                opt(b.fit_all.map(|f| f.c)),
+                format!("{:.2}", b.seconds),
+            ]
+        })
+        .collect();
+    table(&header, &rows)
+}
 
 /// Escapes text for HTML element content and attribute values.
 fn escape(s: &str) -> String {
@@ -69,7 +119,7 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
     if let Some(l) = b.level {
         facts.push(format!("level {l}"));
     }
-    if let Some(l) = super::targets::target(b.name).and_then(|t| t.default_level) {
+    if let Some(l) = target(b.name).and_then(|t| t.default_level) {
         facts.push(format!(
             "cheapest level with mu-bar within 1 % (repro accuracy): {l}"
         ));
