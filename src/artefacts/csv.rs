@@ -101,6 +101,24 @@ pub fn reader(text: &str) -> csv::Reader<&[u8]> {
         .from_reader(text.as_bytes())
 }
 
+/// The line of `text` a record of its [`reader`] starts on, from 1. The reader's position is
+/// where it began to read the record, before the comment and blank lines it skipped (and its
+/// line count leaves comments out), so those are skipped here too.
+pub fn line_of(text: &str, record: &csv::StringRecord) -> usize {
+    let mut at = record
+        .position()
+        .map_or(0, |p| p.byte() as usize)
+        .min(text.len());
+    while let Some(rest) = text.get(at..) {
+        let skipped = rest.starts_with('#') || rest.starts_with('\n') || rest.starts_with("\r\n");
+        match rest.find('\n') {
+            Some(end) if skipped => at += end + 1,
+            _ => break,
+        }
+    }
+    text[..at].matches('\n').count() + 1
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -127,11 +145,11 @@ mod tests {
         let recs: Vec<_> = reader(text).records().map(Result::unwrap).collect();
         assert_eq!(recs.len(), 3);
         assert_eq!(recs[0], vec!["a", "b", "c"]);
-        assert_eq!(recs[0].position().map(|p| p.line()), Some(2));
+        assert_eq!(line_of(text, &recs[0]), 2);
         assert_eq!(recs[1], vec!["x, \"y\"", "2", "multi\nline"]);
-        assert_eq!(recs[1].position().map(|p| p.line()), Some(4));
+        assert_eq!(line_of(text, &recs[1]), 4);
         assert_eq!(recs[2], vec!["last", "1", "2"]);
-        assert_eq!(recs[2].position().map(|p| p.line()), Some(6));
+        assert_eq!(line_of(text, &recs[2]), 6);
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! ([`crate::physics::traction`]) to `(tau_c, mu-bar)`. Every error names the file, the row
 //! and the column.
 
-use super::csv::reader;
+use super::csv::{line_of, reader};
 use crate::physics::case::{CaseError, LubricantSpec};
 use crate::physics::lubricant::{LubricantError, LubricantTable};
 use crate::physics::traction::{
@@ -169,11 +169,6 @@ impl Cells<'_> {
     }
 }
 
-/// The line a record of the reader starts on.
-fn line_of(r: &csv::StringRecord) -> usize {
-    r.position().map_or(0, |p| p.line() as usize)
-}
-
 /// Parses the text of a measured-data file; `file` names it in errors.
 pub fn parse(file: &str, text: &str) -> Result<Dataset, MeasuredError> {
     let mut recs = reader(text).into_records();
@@ -195,7 +190,7 @@ pub fn parse(file: &str, text: &str) -> Result<Dataset, MeasuredError> {
     let header: Vec<String> = head.iter().map(String::from).collect();
     let header_err = |message: String| MeasuredError::Header {
         file: file.into(),
-        line: line_of(&head),
+        line: line_of(text, &head),
         message,
     };
     for (i, h) in header.iter().enumerate() {
@@ -234,7 +229,7 @@ pub fn parse(file: &str, text: &str) -> Result<Dataset, MeasuredError> {
         let c = Cells {
             file,
             row: k + 1,
-            line: line_of(&rec),
+            line: line_of(text, &rec),
             header: &header,
             cells: &cells,
         };

@@ -3,9 +3,10 @@
 //! self-contained page that opens from disk (figures are linked by relative path, no scripts,
 //! no fonts, no network).
 
-use super::csv::{opt, table};
+use super::csv::{reader, records, sci_opt};
 use super::target::{write, Built, Context};
 use super::targets::{build, target};
+use serde::Serialize;
 
 /// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
 /// cannot be built (a solve that fails is a result, not a stop).
@@ -20,38 +21,40 @@ pub fn build_all(names: &[&str], ctx: &Context) -> Result<Vec<Built>, String> {
     Ok(built)
 }
 
+/// A row of `figures/summary.csv`.
+#[derive(Serialize)]
+struct SummaryRow<'a> {
+    target: &'a str,
+    cases: usize,
+    solved: Option<usize>,
+    cached: Option<usize>,
+    level: Option<u32>,
+    #[serde(serialize_with = "sci_opt")]
+    fitted_c: Option<f64>,
+    #[serde(serialize_with = "sci_opt")]
+    rms_rel_dev: Option<f64>,
+    #[serde(serialize_with = "sci_opt")]
+    max_rel_dev: Option<f64>,
+    #[serde(serialize_with = "sci_opt")]
+    fitted_c_all: Option<f64>,
+    /// Wall time, s, to the hundredth.
+    seconds: String,
+}
+
 /// `figures/summary.csv`, one row per target.
 pub fn summary_csv(built: &[Built]) -> String {
-    let header = [
-        "target",
-        "cases",
-        "solved",
-        "cached",
-        "level",
-        "fitted_c",
-        "rms_rel_dev",
-        "max_rel_dev",
-        "fitted_c_all",
-        "seconds",
-    ];
-    let rows: Vec<Vec<String>> = built
-        .iter()
-        .map(|b| {
-            vec![
-                b.name.to_string(),
-                b.cases.to_string(),
-                b.solved.map(|v| v.to_string()).unwrap_or_default(),
-                b.cached.map(|v| v.to_string()).unwrap_or_default(),
-                b.level.map(|v| v.to_string()).unwrap_or_default(),
-                opt(b.fit.map(|f| f.c)),
-                opt(b.fit.map(|f| f.rms_rel_dev)),
-                opt(b.fit.map(|f| f.max_rel_dev)),
-                opt(b.fit_all.map(|f| f.c)),
-                format!("{:.2}", b.seconds),
-            ]
-        })
-        .collect();
-    table(&header, &rows)
+    records(built.iter().map(|b| SummaryRow {
+        target: b.name,
+        cases: b.cases,
+        solved: b.solved,
+        cached: b.cached,
+        level: b.level,
+        fitted_c: b.fit.map(|f| f.c),
+        rms_rel_dev: b.fit.map(|f| f.rms_rel_dev),
+        max_rel_dev: b.fit.map(|f| f.max_rel_dev),
+        fitted_c_all: b.fit_all.map(|f| f.c),
+        seconds: format!("{:.2}", b.seconds),
+    }))
 }
 
 /// Escapes text for HTML element content and attribute values.
@@ -70,25 +73,21 @@ fn escape(s: &str) -> String {
     out
 }
 
-/// A CSV (as `csv::table` writes it: no quoted commas) as an HTML table, at most `max_rows`
-/// rows, the rest counted below it.
+/// A CSV as an HTML table, at most `max_rows` rows, the rest counted below it.
 fn csv_table(csv: &str, max_rows: usize) -> String {
-    let mut lines = csv.lines();
-    let Some(header) = lines.next() else {
+    let mut rows = reader(csv).into_records().filter_map(Result::ok);
+    let Some(header) = rows.next() else {
         return String::new();
     };
-    let mut out = String::from("<table>\n<tr>");
-    for h in header.split(',') {
-        out.push_str(&format!("<th>{}</th>", escape(h)));
-    }
-    out.push_str("</tr>\n");
-    let rows: Vec<&str> = lines.collect();
+    let line = |cell: &str, r: &csv::StringRecord| -> String {
+        r.iter()
+            .map(|c| format!("<{cell}>{}</{cell}>", escape(c)))
+            .collect()
+    };
+    let mut out = format!("<table>\n<tr>{}</tr>\n", line("th", &header));
+    let rows: Vec<csv::StringRecord> = rows.collect();
     for row in rows.iter().take(max_rows) {
-        out.push_str("<tr>");
-        for cell in row.split(',') {
-            out.push_str(&format!("<td>{}</td>", escape(cell)));
-        }
-        out.push_str("</tr>\n");
+        out.push_str(&format!("<tr>{}</tr>\n", line("td", row)));
     }
     out.push_str("</table>\n");
     if rows.len() > max_rows {

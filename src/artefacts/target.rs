@@ -12,7 +12,7 @@ use std::path::{Path, PathBuf};
 pub const WORKING_LEVEL: u32 = 7;
 
 /// Level of the line contacts of Fig. 7 (512 intervals): sliding `mu-bar` within 0.2 % of
-/// level 11 on the heaviest Table 3 case (LINE_NOTES.md), a few tenths of a second per case.
+/// level 11 on the heaviest Table 3 case (docs/LINE_NOTES.md), a few tenths of a second per case.
 pub const LINE_LEVEL: u32 = 8;
 
 /// Where and how targets are built.
