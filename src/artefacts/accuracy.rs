@@ -19,11 +19,12 @@
 //! is single-threaded), and with `repeats > 1` the median wall time is kept.
 
 use super::csv::{num, opt, table};
+use super::line_cases::table3_line_cases;
 use super::sweep::{shipped_sweep, PointSpec};
 use super::table4::Table4Case;
 use crate::physics::case::{LubricantSpec, Physics, Problem, Spec};
 use crate::physics::density::DensityLaw;
-use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
+use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::rheology::Rheology;
 use crate::physics::viscosity::ViscosityLaw;
@@ -226,23 +227,13 @@ pub fn study_cases(with_line: bool) -> Result<Vec<StudyCase>, String> {
         },
     ];
     if with_line {
-        let oil = lubs
-            .state("mineral-oil-a", 40.0)
-            .map_err(|e| e.to_string())?;
-        let problem = LineProblem::from_physical(
-            &LinePhysicalCase {
-                alpha_per_pa: oil.alpha_per_pa,
-                eta0_pa_s: oil.eta0_pa_s,
-                ph_pa: 3e9,
-                um_m_s: 7.0,
-                slip: 0.001,
-                tau0_pa: 8e6,
-                rx_m: 1.03875e-2,
-                e_prime_pa: 226e9,
-            },
-            Physics::figs_4_to_7(),
-        )
-        .map_err(|e| e.to_string())?;
+        // The heaviest line contact of Table 3 (3 GPa), from cases/fig7.toml.
+        let (lines, physics) = table3_line_cases()?;
+        let heaviest = lines
+            .into_iter()
+            .max_by(|a, b| a.ph_pa.total_cmp(&b.ph_pa))
+            .ok_or("cases/fig7.toml: no Table 3 case")?;
+        let problem = LineProblem::from_physical(&heaviest, physics).map_err(|e| e.to_string())?;
         cases.push(StudyCase {
             name: "line",
             description:
