@@ -77,7 +77,7 @@ impl Progress {
                 let mut slot = self.bar.lock().unwrap_or_else(|e| e.into_inner());
                 if slot.as_ref().is_none_or(|(n, _)| n != name) {
                     if let Some((_, old)) = slot.take() {
-                        old.finish();
+                        close(&old);
                     }
                     *slot = Some((name.to_string(), new_bar(name, p.total)));
                 }
@@ -85,7 +85,7 @@ impl Progress {
                     bar.set_position(p.done as u64);
                     bar.set_message(format!("{} cached", p.cached));
                     if p.done == p.total {
-                        bar.finish();
+                        close(bar);
                     }
                 }
             }
@@ -105,6 +105,17 @@ impl Progress {
     }
 }
 
+/// Leaves a bar drawn in its final state, the cursor on the next line (indicatif leaves it
+/// at the end of the bar, where the next output would continue the line).
+fn close(bar: &ProgressBar) {
+    if !bar.is_finished() {
+        bar.finish();
+        if !bar.is_hidden() {
+            eprintln!();
+        }
+    }
+}
+
 fn new_bar(name: &str, total: usize) -> ProgressBar {
     let bar = ProgressBar::new(total as u64);
     // The template is a constant; should indicatif ever refuse it, the default style remains.
@@ -120,7 +131,7 @@ fn new_bar(name: &str, total: usize) -> ProgressBar {
 impl Drop for Progress {
     fn drop(&mut self) {
         if let Some((_, bar)) = self.bar.get_mut().ok().and_then(Option::take) {
-            bar.finish();
+            close(&bar);
         }
     }
 }
