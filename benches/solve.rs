@@ -10,7 +10,8 @@
 
 use criterion::{BenchmarkId, Criterion};
 use repro::artefacts::accuracy::{study_cases, Contact};
-use repro::artefacts::targets::{build, Context};
+use repro::artefacts::target::Context;
+use repro::artefacts::targets::build;
 use repro::physics::case::{Physics, Problem};
 use repro::physics::density::DensityLaw;
 use repro::physics::rheology::Rheology;

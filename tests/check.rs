@@ -5,7 +5,7 @@ use crate::support::repro;
 use repro::artefacts::run::{run_cases, CaseRun};
 use repro::artefacts::snapshot::compare;
 use repro::artefacts::sweep::Sweep;
-use repro::artefacts::targets::runs_csv;
+use repro::artefacts::targets::figure::runs_csv;
 use repro::solver::point::Params;
 use std::path::PathBuf;
 

@@ -1,6 +1,6 @@
 //! The `repro` binary: flags, JSON output and errors that name the flag.
 
-use crate::support::repro;
+use crate::support::{args, repro, SOLVE_KEYS, WORKED_FLAGS};
 
 #[test]
 fn solve_json_has_every_documented_key() {
@@ -9,56 +9,23 @@ fn solve_json_has_every_documented_key() {
     ]);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
-    for key in [
-        "level",
-        "m",
-        "l",
-        "s_bar",
-        "alpha_bar",
-        "lambda",
-        "kappa",
-        "h_central",
-        "h_min",
-        "hc_moes",
-        "hmin_moes",
-        "mu_bar_sliding",
-        "mu_bar_rolling",
-        "mu_bar_total",
-        "tau_c",
-        "cycles",
-        "newton_steps",
-        "residual",
-        "seconds",
-    ] {
+    for key in SOLVE_KEYS {
         assert!(v.get(key).is_some(), "missing key {key}");
     }
     assert_eq!(v["level"], 4);
     // A light case: the cycles converge by themselves and the Newton finish never starts.
     assert_eq!(v["newton_steps"], 0);
+    assert_eq!(v["krylov_iterations"], 0);
+    assert_eq!(v["method"], "cycles");
     assert!((v["m"].as_f64().unwrap() - 100.0).abs() < 1e-9);
 }
 
 #[test]
 fn physical_form_reports_the_worked_case_groups() {
-    let (code, out, err) = repro(&[
-        "solve",
-        "--lubricant",
-        "mineral-oil-a",
-        "--temperature",
-        "40",
-        "--ph",
-        "3e9",
-        "--um",
-        "12",
-        "--slip",
-        "0.005",
-        "--tau0",
-        "4e6",
-        "--level",
-        "6",
-        "--json",
-        "-q",
-    ]);
+    let (code, out, err) = repro(&args(
+        &["solve"],
+        &[&WORKED_FLAGS[..], &["--level", "6", "--json", "-q"]].concat(),
+    ));
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     // Appendix: M = 1738, L = 14.79 (the paper's last digit of M is truncated: 1738.8).

@@ -1,7 +1,7 @@
 //! The line-contact solver through the library API and the CLI: the Table 3 line cases of
 //! Fig. 7, the point-contact trend in Rx/Ry, and `repro solve --line`.
 
-use crate::support::repro;
+use crate::support::{repro, SOLVE_KEYS};
 use repro::artefacts::line_cases::table3_line_cases;
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::line_contact::LineProblem;
@@ -62,7 +62,7 @@ fn elliptical_friction_trend_in_rx_over_ry_and_the_line_value() {
     // fixed p_H the Hertzian pressure of every ellipse is P = sqrt(1 - X^2 - Y^2), so mu-bar
     // is a 2-D average over the ellipse whatever D is, while the line contact averages over
     // the 1-D semi-ellipse, which weights high pressures more (int P^2 / int P: 0.85 vs
-    // 0.75); only the film shape changes with D. LINE_NOTES.md gives the numbers. The test
+    // 0.75); only the film shape changes with D. docs/LINE_NOTES.md gives the numbers. The test
     // asserts the monotone trend and that all values stay within 5 % of the line value
     // (measured 3.3-4.0 % below it).
     let lubs = LubricantTable::table1();
@@ -115,26 +115,8 @@ fn cli_solve_line_json_has_the_point_contact_keys() {
     let (code, out, err) = repro(&args);
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
-    for key in [
-        "level",
-        "m",
-        "l",
-        "s_bar",
-        "alpha_bar",
-        "lambda",
-        "kappa",
-        "h_central",
-        "h_min",
-        "hc_moes",
-        "hmin_moes",
-        "mu_bar_sliding",
-        "mu_bar_rolling",
-        "mu_bar_total",
-        "tau_c",
-        "cycles",
-        "residual",
-        "seconds",
-    ] {
+    // The point contact's keys, `newton_steps` (0: Newton throughout) among them.
+    for key in SOLVE_KEYS {
         assert!(v.get(key).is_some(), "missing {key}");
     }
     assert_eq!(v["contact"], "line");

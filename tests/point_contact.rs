@@ -1,6 +1,7 @@
 //! The point-contact solver against its oracles: the paper's Table 4, published film formulas,
 //! and the hard cases of the paper's parameter range.
 
+use crate::support::appendix_problem;
 use repro::artefacts::table4::{self, Table4Case};
 use repro::physics::case::{
     Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
@@ -252,7 +253,7 @@ fn sliding_friction_follows_the_centre_stress() {
     // asinh(tau_c / 2) exactly (an identity of the groups); the computed mean over the
     // contact lies below the centre value (the pressure and so the viscosity fall off the
     // centre) and above Eq. (13)'s asinh(tau_c / 5) minus the paper's scatter.
-    let p = problem(&physical("mineral-oil-a", 40.0, 3e9, 12.0, 0.005, 4e6, 1.0));
+    let p = appendix_problem();
     let s = solve(&p, &Params::at_level(6), None).unwrap();
     let tau_c = p.tau_c();
     assert!(

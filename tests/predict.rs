@@ -1,58 +1,26 @@
 //! `repro predict` (Eq. 14 for a user's contact) and `repro fig8` (measured data on the
 //! mastercurve): outputs, warnings, and errors that name the flag, file, row and column.
 
-use crate::support::{repro, repro_in};
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
-use repro::physics::lubricant::LubricantTable;
+use crate::support::{appendix_problem, args, repro, repro_in, WORKED_FLAGS};
 use std::path::PathBuf;
 
-/// The Appendix (Table 4) case.
-const WORKED: [&str; 13] = [
-    "predict",
-    "--lubricant",
-    "mineral-oil-a",
-    "--temperature",
-    "40",
-    "--ph",
-    "3e9",
-    "--um",
-    "12",
-    "--slip",
-    "0.005",
-    "--tau0",
-    "4e6",
-];
+/// `repro predict` at the Appendix (Table 4) case.
+fn worked() -> Vec<&'static str> {
+    args(&["predict"], &WORKED_FLAGS)
+}
 
 fn with<'a>(base: &[&'a str], extra: &[&'a str]) -> Vec<&'a str> {
-    base.iter().chain(extra).copied().collect()
+    args(base, extra)
 }
 
 #[test]
 fn predict_gives_eq14_at_the_worked_case() {
-    let (code, out, err) = repro(&with(&WORKED, &["--json"]));
+    let (code, out, err) = repro(&with(&worked(), &["--json"]));
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     let f = |k: &str| v[k].as_f64().unwrap_or_else(|| panic!("missing {k}"));
     // tau_c is the case's own (Problem::tau_c, Eq. 12): same code path, round-off only.
-    let case = Case {
-        spec: Spec::Physical(PhysicalCase {
-            lubricant: LubricantSpec::Named {
-                lubricant: "mineral-oil-a".into(),
-                temperature_c: 40.0,
-            },
-            ph_pa: 3e9,
-            um_m_s: 12.0,
-            slip: 0.005,
-            tau0_pa: 4e6,
-            rx_m: 1.03875e-2,
-            ry_m: 1.03875e-2,
-            e_prime_pa: 226e9,
-        }),
-        physics: Physics::figs_4_to_7(),
-    };
-    let tau_c = Problem::from_case(&case, &LubricantTable::table1())
-        .unwrap()
-        .tau_c();
+    let tau_c = appendix_problem().tau_c();
     assert!((f("tau_c") / tau_c - 1.0).abs() < 1e-12);
     // Eq. (14) and Eq. (8), by hand.
     assert!((f("mu_bar") - (tau_c / 5.0).asinh()).abs() < 1e-12);
@@ -79,7 +47,7 @@ fn predict_load_form_is_the_ph_form() {
     // a = pi Rx p_H / E'.
     let a = std::f64::consts::PI * 1.03875e-2 * 3e9 / 226e9;
     let load = format!("{:e}", 2.0 * std::f64::consts::PI * a * a * 3e9 / 3.0);
-    let mut args = WORKED.to_vec();
+    let mut args = worked();
     args[5] = "--load";
     args[6] = &load;
     let (code, out, err) = repro(&with(&args, &["--json"]));
@@ -92,7 +60,7 @@ fn predict_load_form_is_the_ph_form() {
 #[test]
 fn predict_warns_where_the_paper_says_the_mastercurve_fails() {
     // Large slip: above the 2 % of the paper's isothermal runs.
-    let mut args = WORKED.to_vec();
+    let mut args = worked();
     args[10] = "0.1";
     let (code, out, err) = repro(&args);
     assert_eq!(code, 0, "{err}");
@@ -155,7 +123,7 @@ fn predict_bad_flags_are_named() {
     ];
     for (extra, flag) in cases {
         // Later flags override the worked case's (clap keeps the last value).
-        let mut args: Vec<&str> = WORKED.to_vec();
+        let mut args: Vec<&str> = worked();
         for pair in extra.chunks(2) {
             match args.iter().position(|a| *a == pair[0]) {
                 Some(i) => args[i + 1] = pair[1],

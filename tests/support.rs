@@ -1,5 +1,7 @@
 //! What the integration tests share: running the `repro` binary.
 
+use repro::artefacts::table4::Table4Case;
+use repro::physics::case::Problem;
 use std::path::Path;
 use std::process::Command;
 
@@ -21,3 +23,57 @@ pub fn repro_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
 pub fn repro(args: &[&str]) -> (i32, String, String) {
     repro_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
 }
+
+/// The Appendix (Table 4) case as the physical-form flags of `repro solve` and `repro
+/// predict` (what a user types for `cases/table4.toml`; `appendix_problem` reads the file).
+pub const WORKED_FLAGS: [&str; 12] = [
+    "--lubricant",
+    "mineral-oil-a",
+    "--temperature",
+    "40",
+    "--ph",
+    "3e9",
+    "--um",
+    "12",
+    "--slip",
+    "0.005",
+    "--tau0",
+    "4e6",
+];
+
+/// The Appendix case of `cases/table4.toml` as a dimensionless problem.
+pub fn appendix_problem() -> Problem {
+    Table4Case::shipped()
+        .and_then(|t| t.problem())
+        .expect("cases/table4.toml")
+}
+
+/// `first`, then `rest`: a command line.
+pub fn args<'a>(first: &[&'a str], rest: &[&'a str]) -> Vec<&'a str> {
+    first.iter().chain(rest).copied().collect()
+}
+
+/// Every key `repro solve --json` documents, point and line contact alike.
+pub const SOLVE_KEYS: [&str; 21] = [
+    "level",
+    "m",
+    "l",
+    "s_bar",
+    "alpha_bar",
+    "lambda",
+    "kappa",
+    "h_central",
+    "h_min",
+    "hc_moes",
+    "hmin_moes",
+    "mu_bar_sliding",
+    "mu_bar_rolling",
+    "mu_bar_total",
+    "tau_c",
+    "method",
+    "cycles",
+    "newton_steps",
+    "krylov_iterations",
+    "residual",
+    "seconds",
+];

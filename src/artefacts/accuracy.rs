@@ -19,12 +19,12 @@
 //! is single-threaded), and with `repeats > 1` the median wall time is kept.
 
 use super::csv::{num, opt, table};
-use super::plot::{render_svg, Figure, Marker, Scale, Series, MU_BAR};
+use super::line_cases::table3_line_cases;
 use super::sweep::{shipped_sweep, PointSpec};
 use super::table4::Table4Case;
 use crate::physics::case::{LubricantSpec, Physics, Problem, Spec};
 use crate::physics::density::DensityLaw;
-use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
+use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::rheology::Rheology;
 use crate::physics::viscosity::ViscosityLaw;
@@ -227,23 +227,13 @@ pub fn study_cases(with_line: bool) -> Result<Vec<StudyCase>, String> {
         },
     ];
     if with_line {
-        let oil = lubs
-            .state("mineral-oil-a", 40.0)
-            .map_err(|e| e.to_string())?;
-        let problem = LineProblem::from_physical(
-            &LinePhysicalCase {
-                alpha_per_pa: oil.alpha_per_pa,
-                eta0_pa_s: oil.eta0_pa_s,
-                ph_pa: 3e9,
-                um_m_s: 7.0,
-                slip: 0.001,
-                tau0_pa: 8e6,
-                rx_m: 1.03875e-2,
-                e_prime_pa: 226e9,
-            },
-            Physics::figs_4_to_7(),
-        )
-        .map_err(|e| e.to_string())?;
+        // The heaviest line contact of Table 3 (3 GPa), from cases/fig7.toml.
+        let (lines, physics) = table3_line_cases()?;
+        let heaviest = lines
+            .into_iter()
+            .max_by(|a, b| a.ph_pa.total_cmp(&b.ph_pa))
+            .ok_or("cases/fig7.toml: no Table 3 case")?;
+        let problem = LineProblem::from_physical(&heaviest, physics).map_err(|e| e.to_string())?;
         cases.push(StudyCase {
             name: "line",
             description:
@@ -580,38 +570,6 @@ pub fn recommendations_csv(recs: &[Recommendation]) -> String {
     )
 }
 
-/// `figures/accuracy.svg`: the `mu-bar` error of each level against its wall time, log-log,
-/// one series per case. A level whose error is zero (the finest, when it is its own reference)
-/// cannot be drawn on a log axis and is counted in the figure's note by the plot module.
-pub fn svg(studies: &[CaseStudy]) -> Result<String, String> {
-    let series = studies
-        .iter()
-        .enumerate()
-        .map(|(i, s)| Series {
-            label: format!("{} ({} contact)", s.name, s.kind),
-            points: s
-                .levels
-                .iter()
-                .filter_map(|r| s.errors(r).map(|e| (r.seconds, e.1)))
-                .collect(),
-            marker: Marker::nth(i),
-        })
-        .collect();
-    let fig = Figure {
-        title: "What accuracy costs: one marker per level, finer to the right".into(),
-        x_label: "wall time of one solve (s)".into(),
-        y_label: format!("error of sliding {MU_BAR} vs Richardson extrapolation"),
-        x_scale: Scale::Log,
-        y_scale: Scale::Log,
-        x_range: None,
-        y_range: None,
-        series,
-        curves: Vec::new(),
-        note: None,
-    };
-    render_svg(&fig).map_err(|e| format!("accuracy.svg: {e}"))
-}
-
 /// A readable summary.
 pub fn to_text(studies: &[CaseStudy], recs: &[Recommendation]) -> String {
     let mut out = String::new();
@@ -672,10 +630,11 @@ pub fn to_text(studies: &[CaseStudy], recs: &[Recommendation]) -> String {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn run(level: u32, h: f64, mu: f64) -> LevelRun {
+    /// A level that converged to `h` and `mu` in `0.1 level` seconds.
+    pub(crate) fn run(level: u32, h: f64, mu: f64) -> LevelRun {
         LevelRun {
             level,
             outcome: Ok(Measured {
@@ -687,7 +646,8 @@ mod tests {
         }
     }
 
-    fn study(levels: Vec<LevelRun>) -> CaseStudy {
+    /// A point-contact study of `levels` that stands for Fig. 3.
+    pub(crate) fn study(levels: Vec<LevelRun>) -> CaseStudy {
         CaseStudy {
             name: "t",
             description: "",
@@ -758,13 +718,12 @@ mod tests {
     }
 
     #[test]
-    fn csv_and_svg_are_written_for_failed_levels_too() {
+    fn the_csv_has_a_row_for_failed_levels_too() {
         let mut levels = vec![run(4, 1.0, 40.0), run(5, 1.0, 41.0), run(6, 1.0, 41.2)];
         levels[0].outcome = Err(SolveError::InvalidParams("x".into()));
         let s = study(levels);
         let csv = to_csv(std::slice::from_ref(&s));
         assert_eq!(csv.lines().count(), 4);
         assert!(csv.lines().nth(1).unwrap().contains("failed"));
-        assert!(svg(&[s]).unwrap().starts_with("<svg"));
     }
 }

@@ -1,6 +1,9 @@
-//! Deterministic CSV text: fixed significant digits, `-0` written as `0`, empty cells for
-//! missing values, written atomically (temporary file, then rename).
+//! CSV files through the `csv` crate, in our deterministic form: floats with 7 significant
+//! digits in scientific notation, `-0` written as `0`, empty cells for missing values, `\n`
+//! line ends, cells quoted only where RFC 4180 needs it, files written atomically (temporary
+//! file, then rename).
 
+use serde::{Serialize, Serializer};
 use std::io::Write;
 use std::path::Path;
 
@@ -16,6 +19,16 @@ pub fn num(v: f64) -> String {
 /// An optional float: empty when absent.
 pub fn opt(v: Option<f64>) -> String {
     v.map(num).unwrap_or_default()
+}
+
+/// `#[serde(serialize_with = "sci")]`: a float field as [`num`] writes it.
+pub fn sci<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&num(*v))
+}
+
+/// `#[serde(serialize_with = "sci_opt")]`: an optional float field as [`opt`] writes it.
+pub fn sci_opt<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(&opt(*v))
 }
 
 /// Writes `text` to `path` atomically, creating the parent folder.
@@ -34,120 +47,76 @@ pub fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
     std::fs::rename(&tmp, path)
 }
 
-/// Joins cells into CSV lines (no cell of ours needs quoting; commas are refused).
-pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
-    let mut out = header.join(",");
-    out.push('\n');
-    for r in rows {
-        debug_assert!(r.iter().all(|c| !c.contains(',')));
-        out.push_str(&r.join(","));
-        out.push('\n');
-    }
-    out
-}
-
-/// A cell quoted as RFC 4180 wants when it holds a comma, a double quote or a line break
-/// (free text such as a measured dataset's `source`); other cells unchanged.
-pub fn quote(cell: &str) -> String {
-    if cell.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", cell.replace('"', "\"\""))
-    } else {
-        cell.to_string()
-    }
-}
-
-/// One record of a CSV text: its cells and the line it starts on (1-based).
-#[derive(Debug, Clone, PartialEq, Eq)]
-pub struct Record {
-    /// Line number of the record's first character.
-    pub line: usize,
-    /// Cells, unquoted, surrounding spaces of unquoted cells trimmed.
-    pub cells: Vec<String>,
-}
-
-/// Splits CSV text into records (RFC 4180: cells in double quotes may hold commas, line
-/// breaks and doubled quotes). Blank lines and lines starting with `#` are comments. An
-/// unterminated quote is an error naming the line it opened on.
-pub fn records(text: &str) -> Result<Vec<Record>, String> {
-    let mut out = Vec::new();
-    let mut chars = text.chars().peekable();
-    let mut line = 1;
-    let mut at_line_start = true;
-    let mut cells: Vec<String> = Vec::new();
-    let mut cell = String::new();
-    let mut quoted = false;
-    let mut start = 1;
-    while let Some(c) = chars.next() {
-        if at_line_start {
-            at_line_start = false;
-            start = line;
-            if c == '#' || c == '\n' || (c == '\r' && chars.peek() == Some(&'\n')) {
-                // A comment or blank line: skip to its end.
-                let mut c = c;
-                while c != '\n' {
-                    match chars.next() {
-                        Some(n) => c = n,
-                        None => break,
-                    }
-                }
-                line += 1;
-                at_line_start = true;
-                continue;
-            }
+/// CSV text of `header` and `rows`, each row anything that serialises as a sequence of cells
+/// (a `Vec<String>`, an array of them).
+pub fn table<R: Serialize>(header: &[&str], rows: impl IntoIterator<Item = R>) -> String {
+    let mut w = writer(false);
+    let put = || -> Result<(), csv::Error> {
+        w.write_record(header)?;
+        for r in rows {
+            w.serialize(r)?;
         }
-        match c {
-            '"' if cell.trim().is_empty() && !quoted => {
-                cell.clear();
-                quoted = true;
-                let open = line;
-                loop {
-                    match chars.next() {
-                        Some('"') if chars.peek() == Some(&'"') => {
-                            chars.next();
-                            cell.push('"');
-                        }
-                        Some('"') => break,
-                        Some(ch) => {
-                            if ch == '\n' {
-                                line += 1;
-                            }
-                            cell.push(ch);
-                        }
-                        None => return Err(format!("line {open}: unterminated quoted cell")),
-                    }
-                }
-            }
-            ',' => {
-                cells.push(finish(&mut cell, &mut quoted));
-            }
-            '\n' => {
-                cells.push(finish(&mut cell, &mut quoted));
-                out.push(Record {
-                    line: start,
-                    cells: std::mem::take(&mut cells),
-                });
-                line += 1;
-                at_line_start = true;
-            }
-            '\r' if chars.peek() == Some(&'\n') => {}
-            other => cell.push(other),
+        Ok(())
+    };
+    finish(put().map(|_| w))
+}
+
+/// CSV text of serde records (structs): the header from the field names, one row each.
+pub fn records<R: Serialize>(rows: impl IntoIterator<Item = R>) -> String {
+    let mut w = writer(true);
+    let put = || -> Result<(), csv::Error> {
+        for r in rows {
+            w.serialize(r)?;
+        }
+        Ok(())
+    };
+    finish(put().map(|_| w))
+}
+
+fn writer(has_headers: bool) -> csv::Writer<Vec<u8>> {
+    csv::WriterBuilder::new()
+        .has_headers(has_headers)
+        .terminator(csv::Terminator::Any(b'\n'))
+        .from_writer(Vec::new())
+}
+
+/// The text a writer into memory holds. Writing strings and numbers into a `Vec` cannot fail
+/// (no I/O; our rows are flat), so a failure is a bug of the row type, reported in the text.
+fn finish(w: Result<csv::Writer<Vec<u8>>, csv::Error>) -> String {
+    match w.and_then(|w| w.into_inner().map_err(|e| e.into_error().into())) {
+        Ok(bytes) => String::from_utf8_lossy(&bytes).into_owned(),
+        Err(e) => format!("# CSV error: {e}\n"),
+    }
+}
+
+/// A reader of CSV text, the header row its first record (so that it has a position too):
+/// lines starting with `#` are comments, cells are trimmed, rows may have any number of cells
+/// (the caller names a short row).
+pub fn reader(text: &str) -> csv::Reader<&[u8]> {
+    csv::ReaderBuilder::new()
+        .has_headers(false)
+        .comment(Some(b'#'))
+        .trim(csv::Trim::All)
+        .flexible(true)
+        .from_reader(text.as_bytes())
+}
+
+/// The line of `text` a record of its [`reader`] starts on, from 1. The reader's position is
+/// where it began to read the record, before the comment and blank lines it skipped (and its
+/// line count leaves comments out), so those are skipped here too.
+pub fn line_of(text: &str, record: &csv::StringRecord) -> usize {
+    let mut at = record
+        .position()
+        .map_or(0, |p| p.byte() as usize)
+        .min(text.len());
+    while let Some(rest) = text.get(at..) {
+        let skipped = rest.starts_with('#') || rest.starts_with('\n') || rest.starts_with("\r\n");
+        match rest.find('\n') {
+            Some(end) if skipped => at += end + 1,
+            _ => break,
         }
     }
-    if !at_line_start {
-        cells.push(finish(&mut cell, &mut quoted));
-        out.push(Record { line: start, cells });
-    }
-    Ok(out)
-}
-
-fn finish(cell: &mut String, quoted: &mut bool) -> String {
-    let c = std::mem::take(cell);
-    let was_quoted = std::mem::replace(quoted, false);
-    if was_quoted {
-        c
-    } else {
-        c.trim().to_string()
-    }
+    text[..at].matches('\n').count() + 1
 }
 
 #[cfg(test)]
@@ -155,28 +124,32 @@ mod tests {
     use super::*;
 
     #[test]
-    fn records_unquote_and_skip_comments() {
+    fn cells_are_quoted_only_where_needed_and_read_back() {
+        let rows = vec![
+            vec!["1".to_string(), "Fig. 2, read".to_string()],
+            vec!["".to_string(), "say \"hi\"".to_string()],
+        ];
+        let text = table(&["a", "b"], &rows);
+        assert_eq!(text, "a,b\n1,\"Fig. 2, read\"\n,\"say \"\"hi\"\"\"\n");
+        let back: Vec<Vec<String>> = reader(&text)
+            .records()
+            .skip(1)
+            .map(|rec| rec.unwrap().iter().map(String::from).collect())
+            .collect();
+        assert_eq!(back, rows);
+    }
+
+    #[test]
+    fn comments_blank_lines_and_positions() {
         let text = "# comment\na,b , c\n\n\"x, \"\"y\"\"\",2,\"multi\nline\"\r\nlast,1,2";
-        let r = records(text).unwrap();
-        assert_eq!(r.len(), 3);
-        assert_eq!(
-            r[0],
-            Record {
-                line: 2,
-                cells: vec!["a".into(), "b".into(), "c".into()]
-            }
-        );
-        assert_eq!(r[1].line, 4);
-        assert_eq!(r[1].cells, vec!["x, \"y\"", "2", "multi\nline"]);
-        assert_eq!(r[2].line, 6);
-        assert_eq!(r[2].cells, vec!["last", "1", "2"]);
-        let e = records("a\n\"open,1\n").unwrap_err();
-        assert!(e.contains("line 2"), "{e}");
-        assert_eq!(quote("Fig. 2, read"), "\"Fig. 2, read\"");
-        assert_eq!(
-            records(&format!("{}\n", quote("say \"hi\", ok"))).unwrap()[0].cells,
-            vec!["say \"hi\", ok"]
-        );
+        let recs: Vec<_> = reader(text).records().map(Result::unwrap).collect();
+        assert_eq!(recs.len(), 3);
+        assert_eq!(recs[0], vec!["a", "b", "c"]);
+        assert_eq!(line_of(text, &recs[0]), 2);
+        assert_eq!(recs[1], vec!["x, \"y\"", "2", "multi\nline"]);
+        assert_eq!(line_of(text, &recs[1]), 4);
+        assert_eq!(recs[2], vec!["last", "1", "2"]);
+        assert_eq!(line_of(text, &recs[2]), 6);
     }
 
     #[test]
@@ -184,5 +157,19 @@ mod tests {
         assert_eq!(num(-0.0), "0");
         assert_eq!(num(41.09), "4.109000e1");
         assert_eq!(opt(None), "");
+        #[derive(Serialize)]
+        struct Row {
+            name: &'static str,
+            #[serde(serialize_with = "sci")]
+            x: f64,
+            #[serde(serialize_with = "sci_opt")]
+            y: Option<f64>,
+        }
+        let text = records([Row {
+            name: "a",
+            x: -0.0,
+            y: None,
+        }]);
+        assert_eq!(text, "name,x,y\na,0,\n");
     }
 }

@@ -6,6 +6,12 @@ use serde::Serialize;
 /// The paper's constant in Eq. (13).
 pub const PAPER_C: f64 = 5.0;
 
+/// `tau_c` above which the fit of Figs. 2-7 is taken: below it the centre of the contact is
+/// not yet in the Eyring regime (`tau_m = asinh(tau_c/2) < 4`), friction is no longer
+/// dominated by the shear of the central film, and the paper itself describes the points as
+/// straying from the curve (Sec. III A).
+pub const FIT_TAU_C_MIN: f64 = 100.0;
+
 /// Eq. (13) (and Eq. 14) with constant `c`.
 pub fn mastercurve(tau_c: f64, c: f64) -> f64 {
     (tau_c / c).asinh()

@@ -3,7 +3,7 @@
 //! ([`crate::physics::traction`]) to `(tau_c, mu-bar)`. Every error names the file, the row
 //! and the column.
 
-use super::csv::records;
+use super::csv::{line_of, reader};
 use crate::physics::case::{CaseError, LubricantSpec};
 use crate::physics::lubricant::{LubricantError, LubricantTable};
 use crate::physics::traction::{
@@ -171,31 +171,36 @@ impl Cells<'_> {
 
 /// Parses the text of a measured-data file; `file` names it in errors.
 pub fn parse(file: &str, text: &str) -> Result<Dataset, MeasuredError> {
-    let recs = records(text).map_err(|message| MeasuredError::Header {
+    let mut recs = reader(text).into_records();
+    let unreadable = |e: csv::Error| MeasuredError::Header {
         file: file.into(),
-        line: 0,
-        message,
-    })?;
-    let Some((head, body)) = recs.split_first() else {
-        return Err(MeasuredError::Header {
-            file: file.into(),
-            line: 1,
-            message: "the file has no header row".into(),
-        });
+        line: e.position().map_or(0, |p| p.line() as usize),
+        message: e.to_string(),
     };
+    let head = match recs.next() {
+        Some(r) => r.map_err(unreadable)?,
+        None => {
+            return Err(MeasuredError::Header {
+                file: file.into(),
+                line: 1,
+                message: "the file has no header row".into(),
+            })
+        }
+    };
+    let header: Vec<String> = head.iter().map(String::from).collect();
     let header_err = |message: String| MeasuredError::Header {
         file: file.into(),
-        line: head.line,
+        line: line_of(text, &head),
         message,
     };
-    for (i, h) in head.cells.iter().enumerate() {
+    for (i, h) in header.iter().enumerate() {
         if !COLUMNS.contains(&h.as_str()) {
             return Err(header_err(format!(
                 "unknown column '{h}' (known: {})",
                 COLUMNS.join(", ")
             )));
         }
-        if head.cells[..i].contains(h) {
+        if header[..i].contains(h) {
             return Err(header_err(format!("column '{h}' appears twice")));
         }
     }
@@ -209,7 +214,7 @@ pub fn parse(file: &str, text: &str) -> Result<Dataset, MeasuredError> {
         "tau0_pa",
         "film_formula",
     ] {
-        if !head.cells.iter().any(|h| h == must) {
+        if !header.iter().any(|h| h == must) {
             return Err(header_err(format!("missing column '{must}'")));
         }
     }
@@ -218,21 +223,23 @@ pub fn parse(file: &str, text: &str) -> Result<Dataset, MeasuredError> {
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| file.to_string());
     let mut rows = Vec::new();
-    for (k, rec) in body.iter().enumerate() {
+    for (k, rec) in recs.enumerate() {
+        let rec = rec.map_err(unreadable)?;
+        let cells: Vec<String> = rec.iter().map(String::from).collect();
         let c = Cells {
             file,
             row: k + 1,
-            line: rec.line,
-            header: &head.cells,
-            cells: &rec.cells,
+            line: line_of(text, &rec),
+            header: &header,
+            cells: &cells,
         };
-        if rec.cells.len() != head.cells.len() {
+        if cells.len() != header.len() {
             return Err(c.err(
                 "(row)",
                 format!(
                     "expected {} cells as in the header, found {}",
-                    head.cells.len(),
-                    rec.cells.len()
+                    header.len(),
+                    cells.len()
                 ),
             ));
         }

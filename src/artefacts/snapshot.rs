@@ -10,6 +10,7 @@
 //! 1e-5 relative in the integrated outputs (film, friction). [`REL_TOL`] = 1e-4 is ten times
 //! that, and a 1 % change in any result is a hundred times it.
 
+use super::csv::{reader, table, write_atomic};
 use std::fmt;
 use std::path::Path;
 
@@ -73,32 +74,46 @@ fn agree(column: &str, a: &str, b: &str) -> bool {
     }
 }
 
+/// The records of a CSV text (comment lines left out), header first.
+fn rows(csv: &str) -> Vec<Vec<String>> {
+    reader(csv)
+        .records()
+        .filter_map(Result::ok)
+        .map(|r| r.iter().map(String::from).collect())
+        .collect()
+}
+
 /// The CSV without the [`IGNORED`] columns: what a baseline stores, so that a rerun that only
-/// took a different time leaves the committed file unchanged.
+/// took a different time leaves the committed file unchanged. Leading comment lines are kept.
 pub fn normalize(csv: &str) -> String {
-    let mut lines = csv.lines();
-    let Some(header) = lines.next() else {
-        return String::new();
+    let comments: String = csv
+        .lines()
+        .take_while(|l| l.starts_with('#'))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let mut all = rows(csv).into_iter();
+    let Some(header) = all.next() else {
+        return comments;
     };
-    let keep: Vec<bool> = header.split(',').map(|h| !IGNORED.contains(&h)).collect();
-    let pick = |line: &str| {
-        line.split(',')
+    let keep: Vec<bool> = header
+        .iter()
+        .map(|h| !IGNORED.contains(&h.as_str()))
+        .collect();
+    let pick = |row: Vec<String>| -> Vec<String> {
+        row.into_iter()
             .zip(keep.iter().chain(std::iter::repeat(&true)))
             .filter(|(_, k)| **k)
             .map(|(c, _)| c)
-            .collect::<Vec<_>>()
-            .join(",")
+            .collect()
     };
-    std::iter::once(header)
-        .chain(lines)
-        .map(|l| pick(l) + "\n")
-        .collect()
+    let header = pick(header);
+    let header: Vec<&str> = header.iter().map(String::as_str).collect();
+    comments + &table(&header, all.map(pick))
 }
 
 /// Compares a target's new CSV with its baseline, cell by cell (the [`IGNORED`] columns
 /// dropped from both first).
 pub fn compare(target: &str, baseline: &str, new: &str) -> Vec<Mismatch> {
-    let (baseline, new) = (normalize(baseline), normalize(new));
     let mismatch = |row: usize, column: &str, b: &str, n: &str| Mismatch {
         target: target.to_string(),
         row,
@@ -106,13 +121,16 @@ pub fn compare(target: &str, baseline: &str, new: &str) -> Vec<Mismatch> {
         baseline: b.to_string(),
         new: n.to_string(),
     };
-    let (mut bl, mut nl) = (baseline.lines(), new.lines());
-    let (bh, nh) = (bl.next().unwrap_or(""), nl.next().unwrap_or(""));
+    let (brows, nrows) = (rows(&normalize(baseline)), rows(&normalize(new)));
+    let (bh, nh) = (
+        brows.first().map(|h| h.join(",")).unwrap_or_default(),
+        nrows.first().map(|h| h.join(",")).unwrap_or_default(),
+    );
     if bh != nh {
-        return vec![mismatch(0, "header", bh, nh)];
+        return vec![mismatch(0, "header", &bh, &nh)];
     }
-    let header: Vec<&str> = bh.split(',').collect();
-    let (brows, nrows): (Vec<&str>, Vec<&str>) = (bl.collect(), nl.collect());
+    let header = brows.first().cloned().unwrap_or_default();
+    let (brows, nrows) = (&brows[brows.len().min(1)..], &nrows[nrows.len().min(1)..]);
     let mut out = Vec::new();
     if brows.len() != nrows.len() {
         out.push(mismatch(
@@ -122,12 +140,11 @@ pub fn compare(target: &str, baseline: &str, new: &str) -> Vec<Mismatch> {
             &nrows.len().to_string(),
         ));
     }
-    for (r, (b, n)) in brows.iter().zip(&nrows).enumerate() {
-        let (bc, nc): (Vec<&str>, Vec<&str>) = (b.split(',').collect(), n.split(',').collect());
+    for (r, (b, n)) in brows.iter().zip(nrows).enumerate() {
         for (c, name) in header.iter().enumerate() {
             let (x, y) = (
-                bc.get(c).copied().unwrap_or(""),
-                nc.get(c).copied().unwrap_or(""),
+                b.get(c).map_or("", String::as_str),
+                n.get(c).map_or("", String::as_str),
             );
             if !agree(name, x, y) {
                 out.push(mismatch(r + 1, name, x, y));
@@ -139,7 +156,7 @@ pub fn compare(target: &str, baseline: &str, new: &str) -> Vec<Mismatch> {
 
 /// The CSV files of the built targets (and `summary.csv` when `with_summary`), as names
 /// relative to the output folder.
-pub fn csv_files(built: &[super::targets::Built], with_summary: bool) -> Vec<String> {
+pub fn csv_files(built: &[super::target::Built], with_summary: bool) -> Vec<String> {
     let mut files: Vec<String> = built
         .iter()
         .flat_map(|b| b.files.iter().filter(|f| f.ends_with(".csv")).cloned())
@@ -186,7 +203,7 @@ pub fn accept(baselines: &Path, new_dir: &Path, files: &[String]) -> Result<(), 
         let text = std::fs::read_to_string(new_dir.join(f))
             .map_err(|e| format!("cannot read {}: {e}", new_dir.join(f).display()))?;
         let dest = baselines.join(f);
-        super::csv::write_atomic(&dest, &normalize(&text))
+        write_atomic(&dest, &normalize(&text))
             .map_err(|e| format!("cannot write {}: {e}", dest.display()))?;
     }
     Ok(())

@@ -22,6 +22,15 @@ pub struct Physics {
 }
 
 impl Physics {
+    /// The physics a problem composes, read back from its laws (point and line problems).
+    pub fn of(viscosity: &Viscosity, density: &Density, rheology: Rheology) -> Self {
+        Physics {
+            viscosity: viscosity.law(),
+            density: density.law(),
+            rheology,
+        }
+    }
+
     /// The physics of Figs. 4-7 and of the Appendix case: Roelands, Dowson-Higginson, Eyring.
     pub fn figs_4_to_7() -> Self {
         Physics {
@@ -150,14 +159,14 @@ pub enum CaseError {
     Lubricant(#[from] LubricantError),
 }
 
-fn field(field: &'static str, message: impl Into<String>) -> CaseError {
+pub(super) fn field(field: &'static str, message: impl Into<String>) -> CaseError {
     CaseError::Field {
         field,
         message: message.into(),
     }
 }
 
-fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
+pub(super) fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
     if v > 0.0 && v.is_finite() {
         Ok(v)
     } else {
@@ -165,7 +174,7 @@ fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
     }
 }
 
-fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError> {
+pub(super) fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError> {
     if (0.0..=2.0).contains(&s) {
         Ok(s)
     } else {
@@ -174,6 +183,37 @@ fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError> {
             format!("slide-to-roll ratio must lie in [0, 2], got {s}"),
         ))
     }
+}
+
+/// The physical `p_H` (Pa) and `eta0` (Pa s) of a case given in Moes groups, point or line
+/// contact: checked when given, required by the laws that need them (Roelands both,
+/// Dowson-Higginson `p_H`), NaN when no law asked for them.
+pub(super) fn physical_scales(
+    physics: Physics,
+    ph_pa: Option<f64>,
+    eta0_pa_s: Option<f64>,
+) -> Result<(f64, f64), CaseError> {
+    let needs_ph = physics.viscosity == ViscosityLaw::Roelands
+        || physics.density == DensityLaw::DowsonHigginson;
+    let ph_pa = match ph_pa {
+        Some(v) => positive("ph", v)?,
+        None if needs_ph => return Err(field(
+            "ph",
+            "Roelands and Dowson-Higginson need the physical p_H (Pa) in the dimensionless form",
+        )),
+        None => f64::NAN,
+    };
+    let eta0 = match eta0_pa_s {
+        Some(v) => positive("eta0", v)?,
+        None if physics.viscosity == ViscosityLaw::Roelands => {
+            return Err(field(
+                "eta0",
+                "Roelands needs the ambient viscosity (Pa s) in the dimensionless form",
+            ))
+        }
+        None => f64::NAN,
+    };
+    Ok((ph_pa, eta0))
 }
 
 /// The dimensionless groups of a case (Sec. II and Nomenclature).
@@ -225,6 +265,12 @@ impl Groups {
     pub fn rolling_stress_scale(&self) -> f64 {
         6.0 * self.n / self.lambda
     }
+}
+
+/// `N S` of a point or line contact: the Couette stress argument of Eq. (4) is
+/// `N S eta_bar / H`, so the solvers take this product once.
+pub(super) fn eyring_n_s(n: f64, slip: f64) -> f64 {
+    n * slip
 }
 
 /// The dimensionless point-contact problem of Eqs. (1)-(8), what the solver consumes.
@@ -303,25 +349,7 @@ impl Problem {
         let hz = Hertz::from_load(m, 1.0, 1.0 / ratio, 1.0);
         let tau0_inv = if d.s_bar > 0.0 { d.s_bar / slip } else { 0.0 };
         let groups = Groups::new(&hz, 1.0, l, tau0_inv, slip);
-        let needs_ph = physics.viscosity == ViscosityLaw::Roelands
-            || physics.density == DensityLaw::DowsonHigginson;
-        let ph_pa = match d.ph_pa {
-            Some(v) => positive("ph", v)?,
-            None if needs_ph => {
-                return Err(field("ph", "Roelands and Dowson-Higginson need the physical p_H (Pa) in the dimensionless form"))
-            }
-            None => f64::NAN,
-        };
-        let eta0 = match d.eta0_pa_s {
-            Some(v) => positive("eta0", v)?,
-            None if physics.viscosity == ViscosityLaw::Roelands => {
-                return Err(field(
-                    "eta0",
-                    "Roelands needs the ambient viscosity (Pa s) in the dimensionless form",
-                ))
-            }
-            None => f64::NAN,
-        };
+        let (ph_pa, eta0) = physical_scales(physics, d.ph_pa, d.eta0_pa_s)?;
         let mut problem =
             Self::assemble(groups, hz, physics, eta0, groups.alpha_bar / ph_pa, ph_pa);
         if physics.viscosity == ViscosityLaw::Barus {
@@ -354,16 +382,12 @@ impl Problem {
 
     /// The physics this problem composes.
     pub fn physics(&self) -> Physics {
-        Physics {
-            viscosity: self.viscosity.law(),
-            density: self.density.law(),
-            rheology: self.rheology,
-        }
+        Physics::of(&self.viscosity, &self.density, self.rheology)
     }
 
     /// `N S`: the Couette stress argument is `N S eta_bar / H` (Eq. 4).
     pub fn eyring_n_s(&self) -> f64 {
-        self.groups.n * self.groups.slip
+        eyring_n_s(self.groups.n, self.groups.slip)
     }
 
     /// Characteristic shear stress, Eq. (12): `tau_c = eta_bar(p_H) S-bar / Hc` with `Hc`
@@ -375,25 +399,25 @@ impl Problem {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
+    /// The Appendix (Table 4) case, read from `cases/table4.toml`, its one definition.
     pub(crate) fn worked_case() -> Case {
-        Case {
-            spec: Spec::Physical(PhysicalCase {
-                lubricant: LubricantSpec::Named {
-                    lubricant: "mineral-oil-a".into(),
-                    temperature_c: 40.0,
-                },
-                ph_pa: 3e9,
-                um_m_s: 12.0,
-                slip: 0.005,
-                tau0_pa: 4e6,
-                rx_m: 1.03875e-2,
-                ry_m: 1.03875e-2,
-                e_prime_pa: 226e9,
-            }),
-            physics: Physics::figs_4_to_7(),
+        #[derive(Deserialize)]
+        struct File {
+            case: Case,
+        }
+        let file: File = toml::from_str(include_str!("../../cases/table4.toml"))
+            .expect("cases/table4.toml holds the Appendix case");
+        file.case
+    }
+
+    /// The worked case's operating conditions.
+    pub(crate) fn worked_physical() -> PhysicalCase {
+        match worked_case().spec {
+            Spec::Physical(p) => p,
+            Spec::Dimensionless(_) => panic!("cases/table4.toml: the Appendix case is physical"),
         }
     }
 

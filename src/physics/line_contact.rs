@@ -10,8 +10,11 @@
 //! `H = h Rx / a^2` (the 1-D analogue of the paper's `H = h/c`), so that the film equation is
 //! `H = H0 + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
 
-use super::case::{CaseError, LubricantSpec, PhysicalCase, Physics};
-use super::density::{Density, DensityLaw};
+use super::case::{
+    eyring_n_s, field, physical_scales, positive, slip_in_range, CaseError, LubricantSpec,
+    PhysicalCase, Physics,
+};
+use super::density::Density;
 use super::lubricant::LubricantTable;
 use super::rheology::Rheology;
 use super::viscosity::{Viscosity, ViscosityLaw};
@@ -371,32 +374,6 @@ pub struct LineProblem {
     pub hertz: LineHertz,
 }
 
-fn field(field: &'static str, message: impl Into<String>) -> CaseError {
-    CaseError::Field {
-        field,
-        message: message.into(),
-    }
-}
-
-fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
-    if v > 0.0 && v.is_finite() {
-        Ok(v)
-    } else {
-        Err(field(name, format!("must be positive and finite, got {v}")))
-    }
-}
-
-fn slip_in_range(s: f64) -> Result<f64, CaseError> {
-    if (0.0..=2.0).contains(&s) {
-        Ok(s)
-    } else {
-        Err(field(
-            "slip",
-            format!("slide-to-roll ratio must lie in [0, 2], got {s}"),
-        ))
-    }
-}
-
 impl LineProblem {
     /// From physical operating conditions; every field is checked and named on error.
     pub fn from_physical(c: &LinePhysicalCase, physics: Physics) -> Result<Self, CaseError> {
@@ -404,7 +381,7 @@ impl LineProblem {
         let eta0 = positive("eta0", c.eta0_pa_s)?;
         let ph = positive("ph", c.ph_pa)?;
         let um = positive("um", c.um_m_s)?;
-        let slip = slip_in_range(c.slip)?;
+        let slip = slip_in_range("slip", c.slip)?;
         let tau0 = positive("tau0", c.tau0_pa)?;
         let rx = positive("rx", c.rx_m)?;
         let e_prime = positive("e-prime", c.e_prime_pa)?;
@@ -430,35 +407,14 @@ impl LineProblem {
         if !(c.s_bar >= 0.0 && c.s_bar.is_finite()) {
             return Err(field("s-bar", format!("must be >= 0, got {}", c.s_bar)));
         }
-        let slip = slip_in_range(c.slip)?;
+        let slip = slip_in_range("slip", c.slip)?;
         if c.s_bar > 0.0 && slip == 0.0 {
             return Err(field("slip", "S-bar > 0 needs a slide-to-roll ratio S > 0"));
         }
         let hertz = LineHertz::from_load(m, 1.0, 1.0);
         let tau0_inv = if c.s_bar > 0.0 { c.s_bar / slip } else { 0.0 };
         let groups = LineGroups::new(&hertz, 1.0, l, tau0_inv, slip);
-        let needs_ph = physics.viscosity == ViscosityLaw::Roelands
-            || physics.density == DensityLaw::DowsonHigginson;
-        let ph_pa = match c.ph_pa {
-            Some(v) => positive("ph", v)?,
-            None if needs_ph => {
-                return Err(field(
-                    "ph",
-                    "Roelands and Dowson-Higginson need the physical p_H (Pa) in the dimensionless form",
-                ))
-            }
-            None => f64::NAN,
-        };
-        let eta0 = match c.eta0_pa_s {
-            Some(v) => positive("eta0", v)?,
-            None if physics.viscosity == ViscosityLaw::Roelands => {
-                return Err(field(
-                    "eta0",
-                    "Roelands needs the ambient viscosity (Pa s) in the dimensionless form",
-                ))
-            }
-            None => f64::NAN,
-        };
+        let (ph_pa, eta0) = physical_scales(physics, c.ph_pa, c.eta0_pa_s)?;
         let mut problem = Self::assemble(
             groups,
             hertz,
@@ -499,16 +455,12 @@ impl LineProblem {
 
     /// The physics this problem composes.
     pub fn physics(&self) -> Physics {
-        Physics {
-            viscosity: self.viscosity.law(),
-            density: self.density.law(),
-            rheology: self.rheology,
-        }
+        Physics::of(&self.viscosity, &self.density, self.rheology)
     }
 
     /// `N S`: the Couette stress argument is `N S eta_bar / H`.
     pub fn eyring_n_s(&self) -> f64 {
-        self.groups.n * self.groups.slip
+        eyring_n_s(self.groups.n, self.groups.slip)
     }
 
     /// Characteristic shear stress, Eq. (12), of the line contact: `tau_c = eta_bar(p_H)

@@ -417,24 +417,23 @@ pub fn reduce(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::physics::case::Case;
+    use crate::physics::case::tests::{worked_case, worked_physical};
     use crate::physics::viscosity::Viscosity;
 
+    /// The Appendix case (`cases/table4.toml`) as an operating point, Eq. (10) film.
     fn worked_point() -> OperatingPoint {
+        let c = worked_physical();
         OperatingPoint {
             contact: Contact::Elliptical {
-                rx_m: 1.03875e-2,
-                ry_m: 1.03875e-2,
+                rx_m: c.rx_m,
+                ry_m: c.ry_m,
             },
-            e_prime_pa: 226e9,
-            load: Load::MaxPressure(3e9),
-            lubricant: LubricantSpec::Named {
-                lubricant: "mineral-oil-a".into(),
-                temperature_c: 40.0,
-            },
-            speed: Speed::Mean(12.0),
-            sliding: Sliding::Slip(0.005),
-            tau0_pa: 4e6,
+            e_prime_pa: c.e_prime_pa,
+            load: Load::MaxPressure(c.ph_pa),
+            lubricant: c.lubricant,
+            speed: Speed::Mean(c.um_m_s),
+            sliding: Sliding::Slip(c.slip),
+            tau0_pa: c.tau0_pa,
             viscosity: ViscosityAtPh::Law(ViscosityLaw::Roelands),
             film: FilmFormula::Eq10,
         }
@@ -444,19 +443,7 @@ mod tests {
     fn elliptical_tau_c_is_the_problem_tau_c() {
         let lubs = LubricantTable::table1();
         let c = characteristic(&worked_point(), &lubs).unwrap();
-        let case = Case {
-            spec: Spec::Physical(PhysicalCase {
-                lubricant: worked_point().lubricant,
-                ph_pa: 3e9,
-                um_m_s: 12.0,
-                slip: 0.005,
-                tau0_pa: 4e6,
-                rx_m: 1.03875e-2,
-                ry_m: 1.03875e-2,
-                e_prime_pa: 226e9,
-            }),
-            physics: Physics::figs_4_to_7(),
-        };
+        let case = worked_case();
         let p = Problem::from_case(&case, &lubs).unwrap();
         // Same groups through the same code: equal to round-off.
         assert!(

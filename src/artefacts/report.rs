@@ -1,8 +1,61 @@
-//! The report, `figures/index.html`: every table and figure beside the paper's claim and our
-//! result, one self-contained page that opens from disk (figures are linked by relative path,
-//! no scripts, no fonts, no network).
+//! The report of a run of every target: `figures/summary.csv` (one row per target) and
+//! `figures/index.html`, every table and figure beside the paper's claim and our result, one
+//! self-contained page that opens from disk (figures are linked by relative path, no scripts,
+//! no fonts, no network).
 
-use super::targets::Built;
+use super::csv::{reader, records, sci_opt};
+use super::target::{write, Built, Context};
+use super::targets::{build, target};
+use serde::Serialize;
+
+/// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
+/// cannot be built (a solve that fails is a result, not a stop).
+pub fn build_all(names: &[&str], ctx: &Context) -> Result<Vec<Built>, String> {
+    let mut built = Vec::new();
+    for n in names {
+        built.push(build(n, ctx)?);
+    }
+    write(ctx, "summary.csv", &summary_csv(&built))?;
+    let read = |f: &str| std::fs::read_to_string(ctx.out.join(f)).ok();
+    write(ctx, "index.html", &index_html(&built, &read))?;
+    Ok(built)
+}
+
+/// A row of `figures/summary.csv`.
+#[derive(Serialize)]
+struct SummaryRow<'a> {
+    target: &'a str,
+    cases: usize,
+    solved: Option<usize>,
+    cached: Option<usize>,
+    level: Option<u32>,
+    #[serde(serialize_with = "sci_opt")]
+    fitted_c: Option<f64>,
+    #[serde(serialize_with = "sci_opt")]
+    rms_rel_dev: Option<f64>,
+    #[serde(serialize_with = "sci_opt")]
+    max_rel_dev: Option<f64>,
+    #[serde(serialize_with = "sci_opt")]
+    fitted_c_all: Option<f64>,
+    /// Wall time, s, to the hundredth.
+    seconds: String,
+}
+
+/// `figures/summary.csv`, one row per target.
+pub fn summary_csv(built: &[Built]) -> String {
+    records(built.iter().map(|b| SummaryRow {
+        target: b.name,
+        cases: b.cases,
+        solved: b.solved,
+        cached: b.cached,
+        level: b.level,
+        fitted_c: b.fit.map(|f| f.c),
+        rms_rel_dev: b.fit.map(|f| f.rms_rel_dev),
+        max_rel_dev: b.fit.map(|f| f.max_rel_dev),
+        fitted_c_all: b.fit_all.map(|f| f.c),
+        seconds: format!("{:.2}", b.seconds),
+    }))
+}
 
 /// Escapes text for HTML element content and attribute values.
 fn escape(s: &str) -> String {
@@ -20,25 +73,21 @@ fn escape(s: &str) -> String {
     out
 }
 
-/// A CSV (as `csv::table` writes it: no quoted commas) as an HTML table, at most `max_rows`
-/// rows, the rest counted below it.
+/// A CSV as an HTML table, at most `max_rows` rows, the rest counted below it.
 fn csv_table(csv: &str, max_rows: usize) -> String {
-    let mut lines = csv.lines();
-    let Some(header) = lines.next() else {
+    let mut rows = reader(csv).into_records().filter_map(Result::ok);
+    let Some(header) = rows.next() else {
         return String::new();
     };
-    let mut out = String::from("<table>\n<tr>");
-    for h in header.split(',') {
-        out.push_str(&format!("<th>{}</th>", escape(h)));
-    }
-    out.push_str("</tr>\n");
-    let rows: Vec<&str> = lines.collect();
+    let line = |cell: &str, r: &csv::StringRecord| -> String {
+        r.iter()
+            .map(|c| format!("<{cell}>{}</{cell}>", escape(c)))
+            .collect()
+    };
+    let mut out = format!("<table>\n<tr>{}</tr>\n", line("th", &header));
+    let rows: Vec<csv::StringRecord> = rows.collect();
     for row in rows.iter().take(max_rows) {
-        out.push_str("<tr>");
-        for cell in row.split(',') {
-            out.push_str(&format!("<td>{}</td>", escape(cell)));
-        }
-        out.push_str("</tr>\n");
+        out.push_str(&format!("<tr>{}</tr>\n", line("td", row)));
     }
     out.push_str("</table>\n");
     if rows.len() > max_rows {
@@ -69,7 +118,7 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
     if let Some(l) = b.level {
         facts.push(format!("level {l}"));
     }
-    if let Some(l) = super::targets::target(b.name).and_then(|t| t.default_level) {
+    if let Some(l) = target(b.name).and_then(|t| t.default_level) {
         facts.push(format!(
             "cheapest level with mu-bar within 1 % (repro accuracy): {l}"
         ));

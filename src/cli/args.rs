@@ -1,14 +1,9 @@
-//! Command-line flags, turned once into validated cases and solver parameters: nothing below
-//! this module sees a clap type.
+//! Every flag of `repro`, as clap parses it: the only file that knows clap. `config.rs` turns
+//! these into cases, solver parameters and the pipeline's context once; nothing else reads a
+//! raw flag.
 
-use anyhow::{anyhow, bail, Result};
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use repro::physics::case::{Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec};
-use repro::physics::density::DensityLaw;
-use repro::physics::rheology::Rheology;
-use repro::physics::viscosity::ViscosityLaw;
-use repro::solver::grid::Domain;
-use repro::solver::point::{Params, MAX_LEVEL, MIN_LEVEL};
+use repro::solver::point::Params;
 use std::path::PathBuf;
 
 /// Regenerates "A Generalized Traction Curve for EHL Contacts" (Jacod, Venner and Lugt,
@@ -55,7 +50,7 @@ pub enum Command {
     Fig8(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
-    Predict(Box<crate::predict::PredictArgs>),
+    Predict(Box<PredictArgs>),
     /// Every target, then figures/summary.csv (what `make figures` runs).
     All(TargetArgs),
     /// Run your own sweep file (the format of cases/*.toml) and put it on the mastercurve.
@@ -70,7 +65,7 @@ pub enum Command {
     Check(CheckArgs),
     /// What accuracy costs: representative cases at levels 4-8, error against a Richardson
     /// extrapolation and wall time (figures/accuracy.csv, accuracy.svg, accuracy_levels.csv).
-    Accuracy(crate::accuracy_cmd::AccuracyArgs),
+    Accuracy(AccuracyArgs),
     /// List the targets.
     List,
 }
@@ -229,12 +224,12 @@ pub struct SolveArgs {
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub domain: DomainArg,
     /// Most multigrid cycles on the finest level.
-    #[arg(long = "max-cycles", default_value_t = repro::solver::point::Params::default().max_cycles, help_heading = "Numerics")]
+    #[arg(long = "max-cycles", default_value_t = Params::default().max_cycles, help_heading = "Numerics")]
     pub max_cycles: usize,
-    /// Most Newton steps that finish a point-contact solve on the finest level when its
-    /// cycles stall or run out (only where the pressurised nodes fit a dense system of
-    /// 8000 unknowns, i.e. level 5 and light cases at level 6); 0 turns the finish off.
-    #[arg(long = "newton-steps", default_value_t = repro::solver::point::Params::default().newton_steps, help_heading = "Numerics")]
+    /// Most Newton steps per level of the Newton-Krylov finish that takes over a
+    /// point-contact solve when its cycles stall, diverge or run out (grid-sequenced from
+    /// level 5 up to the finest); 0 turns the finish off.
+    #[arg(long = "newton-steps", default_value_t = Params::default().newton_steps, help_heading = "Numerics")]
     pub newton_steps: usize,
     /// Skip the rolling (Poiseuille) part of the friction.
     #[arg(long = "no-rolling", help_heading = "Numerics")]
@@ -263,121 +258,115 @@ pub struct Table4Args {
     pub quiet: bool,
 }
 
-/// Checks a grid level flag.
-pub fn check_level(flag: &str, level: u32) -> Result<u32> {
-    if (MIN_LEVEL..=MAX_LEVEL).contains(&level) {
-        Ok(level)
+/// Flags of `repro predict`.
+#[derive(Debug, Args)]
+#[command(allow_negative_numbers = true)]
+pub struct PredictArgs {
+    /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
+    #[arg(long, help_heading = "Lubricant")]
+    pub lubricant: Option<String>,
+    /// Temperature, C (with --lubricant).
+    #[arg(long, help_heading = "Lubricant")]
+    pub temperature: Option<f64>,
+    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant).
+    #[arg(long, help_heading = "Lubricant")]
+    pub alpha: Option<f64>,
+    /// Ambient viscosity eta0, Pa s (with --alpha).
+    #[arg(long, help_heading = "Lubricant")]
+    pub eta0: Option<f64>,
+    /// Viscosity-pressure law of eta(p_H) in tau_c (default roelands, as in Figs. 4-7).
+    #[arg(long, value_enum, help_heading = "Lubricant")]
+    pub viscosity: Option<ViscosityArg>,
+
+    /// Maximum Hertzian pressure p_H, Pa (or --load).
+    #[arg(long, help_heading = "Contact")]
+    pub ph: Option<f64>,
+    /// Normal load f, N (or --ph).
+    #[arg(long, help_heading = "Contact")]
+    pub load: Option<f64>,
+    /// Reduced radius in the rolling direction Rx, m.
+    #[arg(long, default_value_t = 1.03875e-2, help_heading = "Contact")]
+    pub rx: f64,
+    /// Reduced radius across the rolling direction Ry, m (default: Rx, a circular contact).
+    #[arg(long, help_heading = "Contact")]
+    pub ry: Option<f64>,
+    /// Reduced modulus E', Pa.
+    #[arg(long = "e-prime", default_value_t = 226e9, help_heading = "Contact")]
+    pub e_prime: f64,
+    /// Mean velocity u_m = (u1 + u2)/2, m/s.
+    #[arg(long, help_heading = "Contact")]
+    pub um: f64,
+    /// Slide-to-roll ratio S = 2 (u2 - u1)/(u2 + u1), in [0, 2].
+    #[arg(long, help_heading = "Contact")]
+    pub slip: f64,
+    /// Eyring stress tau0, Pa.
+    #[arg(long, help_heading = "Contact")]
+    pub tau0: f64,
+
+    /// Also run the full EHL solve (Roelands, Dowson-Higginson, Eyring) and print the
+    /// difference.
+    #[arg(long, help_heading = "Solve")]
+    pub solve: bool,
+    /// Grid level of --solve: 2^(level+1) points per direction (7 is the paper's 256 x 256).
+    #[arg(long, default_value_t = 7, help_heading = "Solve")]
+    pub level: u32,
+    /// Density-pressure law of --solve (default dowson-higginson).
+    #[arg(long, value_enum, help_heading = "Solve")]
+    pub density: Option<DensityArg>,
+
+    /// Print one JSON object instead of the summary.
+    #[arg(long, help_heading = "Output")]
+    pub json: bool,
+    /// No per-cycle progress of --solve on stderr.
+    #[arg(long, short, help_heading = "Output")]
+    pub quiet: bool,
+}
+
+/// Flags of `repro accuracy`.
+#[derive(Debug, Args)]
+pub struct AccuracyArgs {
+    /// Point-contact levels, `A..B` (inclusive) or a comma list (the line contact runs 2
+    /// levels finer).
+    #[arg(long, default_value = "4..8", value_parser = parse_levels)]
+    pub levels: Levels,
+    /// Solves per level; the median wall time is kept.
+    #[arg(long, default_value_t = 1)]
+    pub repeats: usize,
+    /// Leave out the line contact of Fig. 7 (studied 2 levels finer than the point
+    /// contacts; its level 10 takes about 1.5 s, its dense Newton solve is O(n^3)).
+    #[arg(long = "no-line")]
+    pub no_line: bool,
+    /// Output folder.
+    #[arg(long, default_value = "figures")]
+    pub out: PathBuf,
+    /// No per-level progress on stderr.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+/// A list of grid levels.
+#[derive(Debug, Clone)]
+pub struct Levels(pub Vec<u32>);
+
+fn parse_levels(s: &str) -> std::result::Result<Levels, String> {
+    let levels: Vec<u32> = if let Some((a, b)) = s.split_once("..") {
+        let a: u32 = a.trim().parse().map_err(|e| format!("'{a}': {e}"))?;
+        let b: u32 = b.trim().parse().map_err(|e| format!("'{b}': {e}"))?;
+        (a..=b).collect()
     } else {
-        bail!("{flag}: level {level} outside the supported range {MIN_LEVEL}..={MAX_LEVEL}")
+        s.split(',')
+            .map(|v| v.trim().parse().map_err(|e| format!("'{v}': {e}")))
+            .collect::<std::result::Result<_, _>>()?
+    };
+    if levels.is_empty() || levels.windows(2).any(|w| w[0] >= w[1]) {
+        return Err(format!("'{s}': give increasing levels, e.g. 4..8 or 5,6,7"));
     }
+    Ok(Levels(levels))
 }
 
-/// The lubricant of the physical form (`repro solve`, `repro predict`): a lubricant of
-/// Table 1 at `--temperature`, or `--alpha` and `--eta0` given directly.
-pub fn lubricant_spec(
-    lubricant: Option<&str>,
-    temperature: Option<f64>,
-    alpha: Option<f64>,
-    eta0: Option<f64>,
-) -> Result<LubricantSpec> {
-    let need = |v: Option<f64>, flag: &str| v.ok_or_else(|| anyhow!("{flag}: required"));
-    Ok(match (lubricant, alpha) {
-        (Some(name), None) => LubricantSpec::Named {
-            lubricant: name.to_string(),
-            temperature_c: need(temperature, "--temperature")?,
-        },
-        (None, Some(alpha)) => LubricantSpec::Given {
-            alpha_per_pa: alpha,
-            eta0_pa_s: need(eta0, "--eta0")?,
-        },
-        (Some(_), Some(_)) => bail!("--lubricant and --alpha cannot be mixed"),
-        (None, None) => bail!("--lubricant: required (or --alpha and --eta0)"),
-    })
-}
-
-/// The physics flags over `defaults`.
-pub fn physics(
-    viscosity: Option<ViscosityArg>,
-    density: Option<DensityArg>,
-    rheology: Option<RheologyArg>,
-    defaults: Physics,
-) -> Physics {
-    Physics {
-        viscosity: match viscosity {
-            Some(ViscosityArg::Barus) => ViscosityLaw::Barus,
-            Some(ViscosityArg::Roelands) => ViscosityLaw::Roelands,
-            None => defaults.viscosity,
-        },
-        density: match density {
-            Some(DensityArg::Incompressible) => DensityLaw::Incompressible,
-            Some(DensityArg::DowsonHigginson) => DensityLaw::DowsonHigginson,
-            None => defaults.density,
-        },
-        rheology: match rheology {
-            Some(RheologyArg::Eyring) => Rheology::Eyring,
-            Some(RheologyArg::Newtonian) => Rheology::Newtonian,
-            None => defaults.rheology,
-        },
-    }
-}
-
-impl SolveArgs {
-    /// The case the flags describe (which form, and its physics).
-    pub fn case(&self) -> Result<Case> {
-        let dimensionless = self.m.is_some() || self.l.is_some() || self.s_bar.is_some();
-        let physical = self.lubricant.is_some()
-            || self.ph.is_some()
-            || self.um.is_some()
-            || self.tau0.is_some()
-            || self.alpha.is_some();
-        let need = |v: Option<f64>, flag: &str| v.ok_or_else(|| anyhow!("{flag}: required"));
-        let spec = match (dimensionless, physical) {
-            (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--ph/--um/--tau0 (physical form) cannot be mixed"),
-            (false, false) => bail!("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help"),
-            (true, false) => Spec::Dimensionless(DimensionlessCase {
-                m: need(self.m, "--m")?,
-                l: need(self.l, "--l")?,
-                s_bar: need(self.s_bar, "--s-bar")?,
-                d: self.d.unwrap_or(1.0),
-                slip: self.slip.unwrap_or(0.01),
-                eta0_pa_s: self.eta0,
-                ph_pa: self.ph,
-            }),
-            (false, true) => {
-                Spec::Physical(PhysicalCase {
-                    lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0)?,
-                    ph_pa: need(self.ph, "--ph")?,
-                    um_m_s: need(self.um, "--um")?,
-                    slip: need(self.slip, "--slip")?,
-                    tau0_pa: need(self.tau0, "--tau0")?,
-                    rx_m: self.rx,
-                    ry_m: self.ry.unwrap_or(self.rx),
-                    e_prime_pa: self.e_prime,
-                })
-            }
-        };
-        let defaults = if dimensionless {
-            Physics::default()
-        } else {
-            Physics::figs_4_to_7()
-        };
-        let physics = physics(self.viscosity, self.density, self.rheology, defaults);
-        Ok(Case { spec, physics })
-    }
-
-    /// Solver parameters from the numerics flags, for a contact of Moes load `m`.
-    pub fn params(&self, m: f64) -> Result<Params> {
-        Ok(Params {
-            level: check_level("--level", self.level.unwrap_or(7))?,
-            domain: match self.domain {
-                DomainArg::Auto => Domain::for_load(m),
-                DomainArg::Paper => Domain::default(),
-                DomainArg::Wide => Domain::wide(),
-            },
-            max_cycles: self.max_cycles,
-            newton_steps: self.newton_steps,
-            rolling_friction: !self.no_rolling,
-            ..Params::default()
-        })
+impl Cli {
+    /// Parses the command line (exits with status 2 and one line naming the flag on error).
+    pub fn parse_args() -> Self {
+        <Self as Parser>::parse()
     }
 }

@@ -1,15 +1,18 @@
 //! `repro check`: recompute targets at the snapshot profile and compare with the baselines.
 
-use crate::cli::{CheckArgs, TargetArgs};
-use crate::report::{context, run_progress, summary_line, warner};
+use super::args::{CheckArgs, TargetArgs};
+use super::print::summary_line;
+use super::progress::in_context;
 use anyhow::{bail, Result};
+use repro::artefacts::report;
 use repro::artefacts::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
 use repro::artefacts::targets::{self, TARGETS};
 
 /// Differences printed before the rest are only counted.
 const SHOWN: usize = 40;
 
-pub fn check(args: &CheckArgs) -> Result<bool> {
+/// `repro check`: false when a result differs from its baseline.
+pub fn run(args: &CheckArgs) -> Result<bool> {
     let all = args.targets.is_empty();
     let names: Vec<&str> = if all {
         TARGETS.iter().map(|t| t.name).collect()
@@ -30,17 +33,16 @@ pub fn check(args: &CheckArgs) -> Result<bool> {
         no_cache: false,
         quiet: args.quiet,
     };
-    let progress = run_progress(args.quiet);
-    let warn = warner(true);
-    let mut ctx = context(&target_args, &progress, &warn)?;
-    ctx.stride = PROFILE_STRIDE;
-    let result = (|| -> Result<bool> {
+    // Failed cases are part of the baselines, not news: no warnings.
+    let result = in_context(&target_args, false, |ctx| {
+        ctx.stride = PROFILE_STRIDE;
+        let ctx = &*ctx;
         let built = if all {
-            targets::build_all(&names, &ctx).map_err(anyhow::Error::msg)?
+            report::build_all(&names, ctx).map_err(anyhow::Error::msg)?
         } else {
             names
                 .iter()
-                .map(|n| targets::build(n, &ctx))
+                .map(|n| targets::build(n, ctx))
                 .collect::<Result<Vec<_>, _>>()
                 .map_err(anyhow::Error::msg)?
         };
@@ -84,7 +86,7 @@ pub fn check(args: &CheckArgs) -> Result<bool> {
             );
             Ok(false)
         }
-    })();
+    });
     let _ = std::fs::remove_dir_all(&work);
     result
 }

@@ -2,9 +2,9 @@
 //! Figs. 2-7 `mu-bar` against `tau_c` on log-linear axes with Eq. (13) dashed. Series are split
 //! by the case's defining parameter so that the collapse (or not) is visible.
 
-use super::fit::PAPER_C;
-use super::plot::{mastercurve, render_svg, Figure, Marker, Scale, Series};
-use super::run::CaseRun;
+use super::{mastercurve, render_svg, Figure, Marker, Scale, Series};
+use crate::artefacts::fit::PAPER_C;
+use crate::artefacts::run::CaseRun;
 use crate::physics::case::{LubricantSpec, Spec};
 
 const MARKERS: [Marker; 5] = [
@@ -41,8 +41,8 @@ fn series_key(name: &str, run: &CaseRun) -> String {
     }
 }
 
-/// Renders figure `name` from its runs, `xy` giving each solved case's point, with `extra`
-/// series (the line contacts of Fig. 7) drawn after them.
+/// Renders figure `name` with `title` from its runs, `xy` giving each solved case's point,
+/// with `extra` series (the line contacts of Fig. 7) drawn after them.
 pub fn svg(
     name: &str,
     title: &str,
@@ -110,7 +110,7 @@ pub fn svg(
         )
     });
     let fig = Figure {
-        title: format!("{} — {title}", name.replace("fig", "Fig. ")),
+        title: title.to_string(),
         x_label: x_label.into(),
         y_label: y_label.into(),
         x_scale: Scale::Log,

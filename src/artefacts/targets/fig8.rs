@@ -3,11 +3,11 @@
 //! nothing is computed or invented. When the folder holds no dataset the target still builds,
 //! and its CSV, its SVG and its report entry say so and how to add one.
 
-use super::csv::{num, quote, table};
-use super::fit::{fit, mastercurve, PAPER_C};
-use super::measured::{read_folder, transform, ReducedRow};
-use super::plot::{self, render_svg, Curve, Figure, Marker, Scale, Series};
-use super::targets::{Built, Context, FIT_TAU_C_MIN};
+use crate::artefacts::csv::{num, table};
+use crate::artefacts::fit::{fit, mastercurve, FIT_TAU_C_MIN, PAPER_C};
+use crate::artefacts::measured::{read_folder, transform, ReducedRow};
+use crate::artefacts::plot;
+use crate::artefacts::target::{write, Built, Context};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;
 use std::path::Path;
@@ -59,9 +59,9 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
             let p = &r.row.point;
             let eq13 = mastercurve(c.tau_c, PAPER_C);
             vec![
-                quote(&r.dataset),
+                r.dataset.clone(),
                 r.row.row.to_string(),
-                quote(&r.row.series),
+                r.row.series.clone(),
                 match p.contact {
                     Contact::Elliptical { .. } => "elliptical".into(),
                     Contact::Line { .. } => "line".into(),
@@ -82,73 +82,11 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
                 num(r.reduced.mu_bar),
                 num(eq13),
                 num(r.reduced.mu_bar / eq13 - 1.0),
-                quote(&r.row.source),
+                r.row.source.clone(),
             ]
         })
         .collect();
-    // Sources are quoted (they hold commas), which `table` refuses: join here.
-    let mut out = comment;
-    out.push_str(&table(&HEADER, &[]));
-    for c in cells {
-        out.push_str(&c.join(","));
-        out.push('\n');
-    }
-    out
-}
-
-fn svg(rows: &[ReducedRow], fitted: Option<f64>) -> Result<String, String> {
-    let mut series: Vec<Series> = Vec::new();
-    for r in rows {
-        let p = (r.reduced.characteristic.tau_c, r.reduced.mu_bar);
-        match series.iter_mut().find(|s| s.label == r.row.series) {
-            Some(s) => s.points.push(p),
-            None => series.push(Series {
-                label: r.row.series.clone(),
-                points: vec![p],
-                marker: Marker::nth(series.len()),
-            }),
-        }
-    }
-    let xs: Vec<f64> = rows
-        .iter()
-        .map(|r| r.reduced.characteristic.tau_c)
-        .filter(|x| *x > 0.0 && x.is_finite())
-        .collect();
-    let (x_min, x_max) = if xs.is_empty() {
-        // The range of the paper's Figs. 4-8, for the curve alone.
-        (1.0, 1e4)
-    } else {
-        xs.iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                (a.min(x), b.max(x))
-            })
-    };
-    let mut curves = vec![Curve {
-        label: format!("Eq. (13): {} = asinh({}/5)", plot::MU_BAR, plot::TAU_C),
-        ..plot::mastercurve(x_min, x_max, PAPER_C, 200)
-    }];
-    if let Some(c) = fitted {
-        curves.push(Curve {
-            dashed: false,
-            ..plot::mastercurve(x_min, x_max, c, 200)
-        });
-    }
-    let fig = Figure {
-        title: "Fig. 8 — measured friction on the mastercurve (Sec. IV)".into(),
-        x_label: format!("characteristic shear stress {}", plot::TAU_C),
-        y_label: format!("measured reduced friction {}", plot::MU_BAR),
-        x_scale: Scale::Log,
-        y_scale: Scale::Linear,
-        x_range: xs.is_empty().then_some((x_min, x_max)),
-        y_range: xs.is_empty().then_some((0.0, 9.0)),
-        series,
-        curves,
-        note: rows.is_empty().then(|| {
-            "No measured dataset included: add CSV files to cases/fig8/ (docs/measured-data.md)"
-                .to_string()
-        }),
-    };
-    render_svg(&fig).map_err(|e| format!("fig8.svg: {e}"))
+    comment + &table(&HEADER, &cells)
 }
 
 /// Builds Fig. 8 from the datasets of [`DATA_DIR`].
@@ -174,8 +112,9 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
         .filter(|p| p.0 >= FIT_TAU_C_MIN)
         .collect::<Vec<_>>());
     let fit_all = fit(&points);
-    let csv = super::targets::write(ctx, "fig8.csv", &csv_text(&rows, datasets.len()))?;
-    let picture = super::targets::write(ctx, "fig8.svg", &svg(&rows, fit_all.map(|f| f.c))?)?;
+    let csv = write(ctx, "fig8.csv", &csv_text(&rows, datasets.len()))?;
+    let svg = plot::measured::svg(&rows, fit_all.map(|f| f.c))?;
+    let picture = write(ctx, "fig8.svg", &svg)?;
     let ours = if rows.is_empty() {
         (ctx.warn)(format!("fig8: {NO_DATA}"));
         NO_DATA.to_string()

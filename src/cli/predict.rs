@@ -4,12 +4,12 @@
 //! gives `mu-bar = asinh(tau_c / 5)` and Eq. (8) `mu = mu-bar tau0 / p_H`. With `--solve` the
 //! full EHL solve of the same contact (the physics of Figs. 4-7) is printed beside it.
 
-use crate::cli::{check_level, lubricant_spec, physics, DensityArg, ViscosityArg};
-use crate::report::{flag_error, progress_printer, rolling_text, summary_json};
+use super::args::PredictArgs;
+use super::config::{check_level, flag_error, lubricant_spec, physics};
+use super::print::{point_progress, print_failure, rolling_text};
+use super::solve::point_report;
 use anyhow::{bail, Result};
-use clap::Args;
-use repro::artefacts::fit::{mastercurve, PAPER_C};
-use repro::artefacts::targets::FIT_TAU_C_MIN;
+use repro::artefacts::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
 use repro::physics::case::{Case, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::traction::{
@@ -19,70 +19,6 @@ use repro::physics::traction::{
 use repro::solver::point::{solve as solve_point, Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;
-
-/// Flags of `repro predict`.
-#[derive(Debug, Args)]
-#[command(allow_negative_numbers = true)]
-pub struct PredictArgs {
-    /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
-    #[arg(long, help_heading = "Lubricant")]
-    pub lubricant: Option<String>,
-    /// Temperature, C (with --lubricant).
-    #[arg(long, help_heading = "Lubricant")]
-    pub temperature: Option<f64>,
-    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant).
-    #[arg(long, help_heading = "Lubricant")]
-    pub alpha: Option<f64>,
-    /// Ambient viscosity eta0, Pa s (with --alpha).
-    #[arg(long, help_heading = "Lubricant")]
-    pub eta0: Option<f64>,
-    /// Viscosity-pressure law of eta(p_H) in tau_c (default roelands, as in Figs. 4-7).
-    #[arg(long, value_enum, help_heading = "Lubricant")]
-    pub viscosity: Option<ViscosityArg>,
-
-    /// Maximum Hertzian pressure p_H, Pa (or --load).
-    #[arg(long, help_heading = "Contact")]
-    pub ph: Option<f64>,
-    /// Normal load f, N (or --ph).
-    #[arg(long, help_heading = "Contact")]
-    pub load: Option<f64>,
-    /// Reduced radius in the rolling direction Rx, m.
-    #[arg(long, default_value_t = 1.03875e-2, help_heading = "Contact")]
-    pub rx: f64,
-    /// Reduced radius across the rolling direction Ry, m (default: Rx, a circular contact).
-    #[arg(long, help_heading = "Contact")]
-    pub ry: Option<f64>,
-    /// Reduced modulus E', Pa.
-    #[arg(long = "e-prime", default_value_t = 226e9, help_heading = "Contact")]
-    pub e_prime: f64,
-    /// Mean velocity u_m = (u1 + u2)/2, m/s.
-    #[arg(long, help_heading = "Contact")]
-    pub um: f64,
-    /// Slide-to-roll ratio S = 2 (u2 - u1)/(u2 + u1), in [0, 2].
-    #[arg(long, help_heading = "Contact")]
-    pub slip: f64,
-    /// Eyring stress tau0, Pa.
-    #[arg(long, help_heading = "Contact")]
-    pub tau0: f64,
-
-    /// Also run the full EHL solve (Roelands, Dowson-Higginson, Eyring) and print the
-    /// difference.
-    #[arg(long, help_heading = "Solve")]
-    pub solve: bool,
-    /// Grid level of --solve: 2^(level+1) points per direction (7 is the paper's 256 x 256).
-    #[arg(long, default_value_t = 7, help_heading = "Solve")]
-    pub level: u32,
-    /// Density-pressure law of --solve (default dowson-higginson).
-    #[arg(long, value_enum, help_heading = "Solve")]
-    pub density: Option<DensityArg>,
-
-    /// Print one JSON object instead of the summary.
-    #[arg(long, help_heading = "Output")]
-    pub json: bool,
-    /// No per-cycle progress of --solve on stderr.
-    #[arg(long, short, help_heading = "Output")]
-    pub quiet: bool,
-}
 
 /// What the paper says about where Eq. (14) does not hold, for this case.
 fn warnings(c: &Characteristic) -> Vec<String> {
@@ -103,7 +39,7 @@ fn warnings(c: &Characteristic) -> Vec<String> {
 }
 
 /// `repro predict`: false when the --solve did not converge (after printing why).
-pub fn predict(args: &PredictArgs) -> Result<bool> {
+pub fn run(args: &PredictArgs) -> Result<bool> {
     let level = check_level("--level", args.level)?;
     let lubricant = lubricant_spec(
         args.lubricant.as_deref(),
@@ -160,11 +96,11 @@ pub fn predict(args: &PredictArgs) -> Result<bool> {
         };
         let problem = Problem::from_case(&case, &lubs).map_err(flag_error)?;
         let params = Params::at_level(level);
-        let mut printer = progress_printer(args.quiet || args.json);
+        let mut printer = point_progress(args.quiet || args.json);
         match solve_point(&problem, &params, Some(&mut printer)) {
             Ok(s) => Some((problem, s)),
             Err(e) => {
-                crate::report::print_failure(&e);
+                print_failure(&e);
                 return Ok(false);
             }
         }
@@ -174,7 +110,7 @@ pub fn predict(args: &PredictArgs) -> Result<bool> {
 
     if args.json {
         let solve = solved.as_ref().map(|(p, s)| {
-            let mut v = summary_json(p, &level, s, p.tau_c());
+            let mut v = point_report(p, level, s).json();
             v["mu_sliding"] = json!(c.friction(s.friction.sliding, tau0));
             v
         });

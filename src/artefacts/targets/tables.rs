@@ -1,9 +1,9 @@
 //! The table targets: Tables 1-3 emitted from `cases/` with their derived groups, and
 //! Table 4, the grid convergence of the Appendix case at its own levels.
 
-use super::csv::{num, table};
-use super::sweep::shipped_sweep;
-use super::targets::{write, Built, Context};
+use crate::artefacts::csv::{num, table};
+use crate::artefacts::sweep::shipped_sweep;
+use crate::artefacts::target::{write, Built, Context};
 use crate::physics::case::{LubricantSpec, Spec};
 use crate::physics::lubricant::LubricantTable;
 
@@ -205,7 +205,7 @@ pub(super) fn table3(ctx: &Context) -> Result<Built, String> {
 }
 
 pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
-    use super::table4 as t4;
+    use crate::artefacts::table4 as t4;
     let spec = t4::Table4Case::shipped()?;
     // A grid-convergence table: always its own levels (cases/table4.toml), whatever level
     // the other targets are built at.

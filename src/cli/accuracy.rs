@@ -1,57 +1,16 @@
 //! `repro accuracy`: the level study of [`repro::artefacts::accuracy`], its files and summary.
 
+use super::args::AccuracyArgs;
+use super::config::check_level;
 use anyhow::{bail, Context as _, Result};
-use clap::Args;
 use repro::artefacts::accuracy::{self, MU_TOLERANCE};
 use repro::artefacts::csv::write_atomic;
-use std::path::PathBuf;
-
-/// Flags of `repro accuracy`.
-#[derive(Debug, Args)]
-pub struct AccuracyArgs {
-    /// Point-contact levels, `A..B` (inclusive) or a comma list (the line contact runs 2
-    /// levels finer).
-    #[arg(long, default_value = "4..8", value_parser = parse_levels)]
-    pub levels: Levels,
-    /// Solves per level; the median wall time is kept.
-    #[arg(long, default_value_t = 1)]
-    pub repeats: usize,
-    /// Leave out the line contact of Fig. 7 (studied 2 levels finer than the point
-    /// contacts; its level 10 takes about 1.5 s, its dense Newton solve is O(n^3)).
-    #[arg(long = "no-line")]
-    pub no_line: bool,
-    /// Output folder.
-    #[arg(long, default_value = "figures")]
-    pub out: PathBuf,
-    /// No per-level progress on stderr.
-    #[arg(long, short)]
-    pub quiet: bool,
-}
-
-/// A list of grid levels.
-#[derive(Debug, Clone)]
-pub struct Levels(pub Vec<u32>);
-
-fn parse_levels(s: &str) -> std::result::Result<Levels, String> {
-    let levels: Vec<u32> = if let Some((a, b)) = s.split_once("..") {
-        let a: u32 = a.trim().parse().map_err(|e| format!("'{a}': {e}"))?;
-        let b: u32 = b.trim().parse().map_err(|e| format!("'{b}': {e}"))?;
-        (a..=b).collect()
-    } else {
-        s.split(',')
-            .map(|v| v.trim().parse().map_err(|e| format!("'{v}': {e}")))
-            .collect::<std::result::Result<_, _>>()?
-    };
-    if levels.is_empty() || levels.windows(2).any(|w| w[0] >= w[1]) {
-        return Err(format!("'{s}': give increasing levels, e.g. 4..8 or 5,6,7"));
-    }
-    Ok(Levels(levels))
-}
+use repro::artefacts::plot;
 
 /// Runs the study; false when a case converged at none of its levels.
 pub fn run(args: &AccuracyArgs) -> Result<bool> {
     for &l in &args.levels.0 {
-        crate::cli::check_level("--levels", l)?;
+        check_level("--levels", l)?;
     }
     if args.repeats == 0 {
         bail!("--repeats: must be at least 1");
@@ -80,7 +39,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
         ("accuracy_levels.csv", accuracy::recommendations_csv(&recs)),
         (
             "accuracy.svg",
-            accuracy::svg(&studies).map_err(anyhow::Error::msg)?,
+            plot::accuracy::svg(&studies).map_err(anyhow::Error::msg)?,
         ),
     ];
     for (name, text) in &files {

@@ -1,0 +1,183 @@
+//! Geometry of the plotting area: segments clipped to the axes, curves broken into their
+//! visible pieces, and the emptiest corner for the legend and the notes.
+
+use super::axes::AxisPlan;
+
+/// Clips the segment a-b to the rectangle [x0, x1] x [y0, y1] (Liang-Barsky).
+pub(super) fn clip_segment(
+    a: (f64, f64),
+    b: (f64, f64),
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Option<((f64, f64), (f64, f64))> {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, a.0 - x0),
+        (dx, x1 - a.0),
+        (-dy, a.1 - y0),
+        (dy, y1 - a.1),
+    ] {
+        if p == 0.0 {
+            if q < 0.0 {
+                return None;
+            }
+        } else {
+            let r = q / p;
+            if p < 0.0 {
+                t0 = t0.max(r);
+            } else {
+                t1 = t1.min(r);
+            }
+        }
+    }
+    if t0 > t1 {
+        return None;
+    }
+    let at = |t: f64| (a.0 + t * dx, a.1 + t * dy);
+    Some((at(t0), at(t1)))
+}
+
+/// A curve's visible pieces in plotted coordinates: broken at unplottable points, clipped to
+/// the axes.
+pub(super) fn visible_pieces(
+    pts: &[Option<(f64, f64)>],
+    x: &AxisPlan,
+    y: &AxisPlan,
+) -> Vec<Vec<(f64, f64)>> {
+    let mut pieces: Vec<Vec<(f64, f64)>> = Vec::new();
+    let mut current: Vec<(f64, f64)> = Vec::new();
+    for w in pts.windows(2) {
+        let (Some(a), Some(b)) = (w[0], w[1]) else {
+            if current.len() >= 2 {
+                pieces.push(std::mem::take(&mut current));
+            }
+            current.clear();
+            continue;
+        };
+        match clip_segment(a, b, (x.lo, x.hi), (y.lo, y.hi)) {
+            Some((p, q)) => {
+                if current.last() != Some(&p) {
+                    if current.len() >= 2 {
+                        pieces.push(std::mem::take(&mut current));
+                    }
+                    current.clear();
+                    current.push(p);
+                }
+                current.push(q);
+            }
+            None => {
+                if current.len() >= 2 {
+                    pieces.push(std::mem::take(&mut current));
+                }
+                current.clear();
+            }
+        }
+    }
+    if current.len() >= 2 {
+        pieces.push(current);
+    }
+    if pts.len() == 1 {
+        if let Some(p) = pts[0] {
+            if x.contains(p.0) && y.contains(p.1) {
+                pieces.push(vec![p, p]);
+            }
+        }
+    }
+    pieces
+}
+
+/// A pixel rectangle, x0 < x1 and y0 < y1 (y grows downwards).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) struct Rect {
+    pub(super) x0: i32,
+    pub(super) x1: i32,
+    pub(super) y0: i32,
+    pub(super) y1: i32,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Corner {
+    UpperLeft,
+    UpperRight,
+    LowerRight,
+    LowerLeft,
+}
+
+impl Rect {
+    pub(super) const INSET: i32 = 10;
+
+    pub(super) fn grow(&self, by: i32) -> Rect {
+        Rect {
+            x0: self.x0 - by,
+            x1: self.x1 + by,
+            y0: self.y0 - by,
+            y1: self.y1 + by,
+        }
+    }
+
+    pub(super) fn contains(&self, (x, y): (i32, i32)) -> bool {
+        x >= self.x0 && x <= self.x1 && y >= self.y0 && y <= self.y1
+    }
+
+    pub(super) fn meets_segment(&self, a: (i32, i32), b: (i32, i32)) -> bool {
+        let f = |p: (i32, i32)| (f64::from(p.0), f64::from(p.1));
+        clip_segment(
+            f(a),
+            f(b),
+            (f64::from(self.x0), f64::from(self.x1)),
+            (f64::from(self.y0), f64::from(self.y1)),
+        )
+        .is_some()
+    }
+
+    /// A box of `size` in `corner`, inset from the edges.
+    pub(super) fn place(&self, corner: Corner, (w, h): (i32, i32)) -> Rect {
+        let left = self.x0 + Self::INSET;
+        let right = self.x1 - Self::INSET - w;
+        let top = self.y0 + Self::INSET;
+        let bottom = self.y1 - Self::INSET - h;
+        let (x0, y0) = match corner {
+            Corner::UpperLeft => (left, top),
+            Corner::UpperRight => (right, top),
+            Corner::LowerRight => (right, bottom),
+            Corner::LowerLeft => (left, bottom),
+        };
+        Rect {
+            x0,
+            x1: x0 + w,
+            y0,
+            y1: y0 + h,
+        }
+    }
+
+    pub(super) fn centred(&self, (w, h): (i32, i32)) -> Rect {
+        let x0 = (self.x0 + self.x1 - w) / 2;
+        let y0 = (self.y0 + self.y1 - h) / 2;
+        Rect {
+            x0,
+            x1: x0 + w,
+            y0,
+            y1: y0 + h,
+        }
+    }
+
+    /// The corner where a box of `size` covers the fewest data (ties: upper left first).
+    pub(super) fn emptiest_corner(
+        &self,
+        size: (i32, i32),
+        exclude: Option<Corner>,
+        crowding: &dyn Fn(&Rect) -> usize,
+    ) -> Corner {
+        [
+            Corner::UpperLeft,
+            Corner::UpperRight,
+            Corner::LowerRight,
+            Corner::LowerLeft,
+        ]
+        .into_iter()
+        .filter(|c| Some(*c) != exclude)
+        .min_by_key(|c| crowding(&self.place(*c, size)))
+        .unwrap_or(Corner::UpperLeft)
+    }
+}

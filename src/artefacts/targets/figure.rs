@@ -1,0 +1,383 @@
+//! The sweep figures (Figs. 1-7) and a user's own sweep (`repro run`): run the sweep's cases
+//! (cached), write the per-case CSV and the picture, fit the mastercurve.
+
+use crate::artefacts::csv::{num, opt, table};
+use crate::artefacts::fit::{fit, mastercurve, FIT_TAU_C_MIN, PAPER_C};
+use crate::artefacts::line_cases;
+use crate::artefacts::plot::{scatter, Marker, Series};
+use crate::artefacts::run::{run_cases, CaseRun, Outcome, RunProgress};
+use crate::artefacts::sweep::{shipped_sweep, Sweep};
+use crate::artefacts::target::{write, Built, Context, LINE_LEVEL, SAMPLED_ABOVE, WORKING_LEVEL};
+use crate::physics::case::{LubricantSpec, Spec};
+use crate::solver::point::Params;
+
+/// Which sweep a figure draws, and what it plots.
+struct FigureSpec {
+    /// What the picture's title starts with ("Fig. 4", or a study's file stem).
+    heading: String,
+    /// The shipped sweep (`cases/<sweep>.toml`).
+    sweep: &'static str,
+    /// The quantity on the y axis: sliding or total reduced friction.
+    total: bool,
+    /// x is `S-bar^(1/4) M L^3` (Fig. 1) instead of `tau_c`.
+    severity: bool,
+}
+
+fn figure_spec(name: &str) -> FigureSpec {
+    let (sweep, total, severity) = match name {
+        "fig1" => ("fig1-3", true, true),
+        "fig2" => ("fig1-3", true, false),
+        "fig3" => ("fig1-3", false, false),
+        "fig4" => ("fig4", false, false),
+        "fig5" => ("fig5", false, false),
+        "fig6" => ("fig6", false, false),
+        _ => ("fig7", false, false),
+    };
+    FigureSpec {
+        heading: name.replace("fig", "Fig. "),
+        sweep,
+        total,
+        severity,
+    }
+}
+
+/// Runs a sweep at the context's level, else the sweep's own, else the target's
+/// `default_level`, else the working level.
+pub fn run_sweep(
+    label: &str,
+    sweep: &Sweep,
+    default_level: Option<u32>,
+    ctx: &Context,
+) -> Result<(Vec<CaseRun>, u32), String> {
+    let level = ctx
+        .level
+        .or(sweep.level)
+        .or(default_level)
+        .unwrap_or(WORKING_LEVEL);
+    let params = Params::at_level(level);
+    let progress = |p: RunProgress| (ctx.progress)(label, p);
+    let cases: Vec<_> = if ctx.stride > 1 && sweep.cases.len() > SAMPLED_ABOVE {
+        sweep.cases.iter().step_by(ctx.stride).cloned().collect()
+    } else {
+        sweep.cases.clone()
+    };
+    let runs = run_cases(&cases, &params, ctx.cache.as_ref(), &progress, ctx.warn)?;
+    Ok((runs, level))
+}
+
+/// The x and y of a case on a figure.
+fn xy(run: &CaseRun, spec: &FigureSpec) -> Option<(f64, f64)> {
+    let rec = run.record()?;
+    let g = &run.problem.groups;
+    let x = if spec.severity {
+        g.s_bar.powf(0.25) * g.m * g.l.powi(3)
+    } else {
+        run.problem.tau_c()
+    };
+    let y = if spec.total {
+        rec.mu_bar_total()
+    } else {
+        rec.mu_bar_sliding
+    };
+    Some((x, y))
+}
+
+/// The per-case CSV of a sweep's runs, with the figure's x and y.
+pub fn runs_csv(
+    runs: &[CaseRun],
+    spec_x: &str,
+    spec_y: &str,
+    xy: impl Fn(&CaseRun) -> Option<(f64, f64)>,
+) -> String {
+    let header = [
+        "case",
+        "lubricant",
+        "temperature_c",
+        "ph_gpa",
+        "um_m_s",
+        "slip",
+        "tau0_mpa",
+        "d",
+        "m",
+        "l",
+        "s_bar",
+        "alpha_bar",
+        "lambda",
+        "kappa",
+        "n",
+        "tau_c",
+        "mu_bar_eq13",
+        "hc",
+        "hc_moes",
+        "hmin",
+        "mu_bar_sliding",
+        "mu_bar_rolling",
+        "mu_bar_total",
+        spec_x,
+        spec_y,
+        "rel_dev_eq13",
+        "cycles",
+        "residual",
+        "seconds",
+        "cached",
+        "status",
+    ];
+    let rows: Vec<Vec<String>> = runs
+        .iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let g = &r.problem.groups;
+            let tau_c = r.problem.tau_c();
+            let (lub, temp, ph, um, tau0) = match &r.case.spec {
+                Spec::Physical(p) => {
+                    let (l, t) = match &p.lubricant {
+                        LubricantSpec::Named {
+                            lubricant,
+                            temperature_c,
+                        } => (lubricant.clone(), num(*temperature_c)),
+                        LubricantSpec::Given { .. } => ("given".to_string(), String::new()),
+                    };
+                    (
+                        l,
+                        t,
+                        num(p.ph_pa / 1e9),
+                        num(p.um_m_s),
+                        num(p.tau0_pa / 1e6),
+                    )
+                }
+                Spec::Dimensionless(_) => (
+                    String::new(),
+                    String::new(),
+                    String::new(),
+                    String::new(),
+                    String::new(),
+                ),
+            };
+            let point = xy(r);
+            let eq13 = mastercurve(tau_c, PAPER_C);
+            let (rec_cells, status) = match &r.outcome {
+                Outcome::Solved(rec) => (
+                    vec![
+                        num(rec.h_central),
+                        num(rec.hc_moes),
+                        num(rec.h_min),
+                        num(rec.mu_bar_sliding),
+                        opt(rec.mu_bar_rolling),
+                        num(rec.mu_bar_total()),
+                        opt(point.map(|p| p.0)),
+                        opt(point.map(|p| p.1)),
+                        opt(point.map(|p| p.1 / eq13 - 1.0)),
+                        rec.cycles.to_string(),
+                        num(rec.residual),
+                        format!("{:.3}", rec.seconds),
+                    ],
+                    "solved".to_string(),
+                ),
+                Outcome::Failed {
+                    residual_history, ..
+                } => {
+                    let mut cells = vec![String::new(); 12];
+                    cells[9] = residual_history.len().to_string();
+                    cells[10] = opt(residual_history.last().copied());
+                    let kind = r.failure_kind().unwrap_or("failed");
+                    (cells, format!("failed: {kind}"))
+                }
+            };
+            let mut row = vec![
+                (i + 1).to_string(),
+                lub,
+                temp,
+                ph,
+                um,
+                num(g.slip),
+                tau0,
+                num(g.d),
+                num(g.m),
+                num(g.l),
+                num(g.s_bar),
+                num(g.alpha_bar),
+                num(g.lambda),
+                num(g.kappa),
+                num(g.n),
+                num(tau_c),
+                num(eq13),
+            ];
+            row.extend(rec_cells);
+            row.push(r.cached.to_string());
+            row.push(status);
+            row
+        })
+        .collect();
+    table(&header, &rows)
+}
+
+/// Builds figure `name` (Figs. 1-7) at the context's level, else `default_level`.
+pub fn build(
+    name: &'static str,
+    default_level: Option<u32>,
+    ctx: &Context,
+) -> Result<Built, String> {
+    let spec = figure_spec(name);
+    let sweep = shipped_sweep(spec.sweep).map_err(|e| e.to_string())?;
+    let claim = match name {
+        "fig1" => "friction collapses on one curve for S-bar^(1/4) M L^3 >= 1e4, scattered below",
+        "fig2" => "total mu-bar follows Eq. (13), c = 5, except a cluster at low tau_c where rolling friction dominates",
+        _ => "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)",
+    };
+    // Fig. 7 adds the Table 3 line contacts, solved by the 1-D solver at its working level.
+    let (line, extra) = if name == "fig7" {
+        let runs = line_cases::solve_table3(LINE_LEVEL)?;
+        let series = Series {
+            label: "line contact".into(),
+            points: line_cases::line_points(&runs),
+            marker: Marker::Cross,
+        };
+        (Some(runs), vec![series])
+    } else {
+        (None, Vec::new())
+    };
+    let (mut built, runs) = sweep_figure(name, &sweep, &spec, default_level, ctx, &extra)?;
+    if let Some(line) = &line {
+        let csv = line_cases::line_csv(line, LINE_LEVEL);
+        built.files.push(write(ctx, "fig7-line.csv", &csv)?);
+        built.cases += line.len();
+        let solved = line.iter().filter(|r| r.outcome.is_ok()).count();
+        built.solved = built.solved.map(|s| s + solved);
+    }
+    built.name = name;
+    built.paper_claim = claim.to_string();
+    if spec.severity {
+        built.ours.push_str(&severity_summary(&runs));
+    }
+    Ok(built)
+}
+
+/// Fig. 1's collapse: the scatter of total `mu-bar` ordered by the paper's `S-bar^(1/4) M L^3`
+/// against the exponents of `S-bar^a M L^c` that collapse our points best.
+fn severity_summary(runs: &[CaseRun]) -> String {
+    let cases: Vec<(f64, f64, f64, f64)> = runs
+        .iter()
+        .filter_map(|r| {
+            let g = &r.problem.groups;
+            r.record()
+                .map(|rec| (g.s_bar, g.m, g.l, rec.mu_bar_total()))
+        })
+        .collect();
+    let mut paper: Vec<(f64, f64)> = cases
+        .iter()
+        .map(|&(s, m, l, mu)| (0.25 * s.ln() + m.ln() + 3.0 * l.ln(), mu))
+        .collect();
+    let paper_scatter = crate::artefacts::fit::scatter(&mut paper);
+    match crate::artefacts::fit::severity_exponents(&cases) {
+        Some((a, c, best)) => format!(
+            "; scatter about one curve (0 = a curve, 2 = random) {paper_scatter:.3} with the paper's S-bar^(1/4) M L^3, {best:.3} with the best exponents S-bar^{a:.2} M L^{c:.1}"
+        ),
+        None => String::new(),
+    }
+}
+
+/// A user's own sweep (`repro run`), drawn and fitted as Figs. 3-7: sliding `mu-bar` against
+/// `tau_c`, files named after `stem`.
+pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<Built, String> {
+    let spec = FigureSpec {
+        heading: stem.to_string(),
+        sweep: "",
+        total: false,
+        severity: false,
+    };
+    let (mut built, _) = sweep_figure(stem, sweep, &spec, None, ctx, &[])?;
+    built.paper_claim = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)".into();
+    Ok(built)
+}
+
+/// Runs `sweep`, writes `<stem>.csv` and `<stem>.svg`, fits the mastercurve.
+fn sweep_figure(
+    stem: &str,
+    sweep: &Sweep,
+    spec: &FigureSpec,
+    default_level: Option<u32>,
+    ctx: &Context,
+    extra: &[Series],
+) -> Result<(Built, Vec<CaseRun>), String> {
+    let (runs, level) = run_sweep(stem, sweep, default_level, ctx)?;
+    for (i, r) in runs.iter().enumerate() {
+        if let Outcome::Failed { error, .. } = &r.outcome {
+            (ctx.warn)(format!(
+                "{stem}: case {} (M {:.4}, L {:.4}, S-bar {:.3e}) failed: {error}",
+                i + 1,
+                r.problem.groups.m,
+                r.problem.groups.l,
+                r.problem.groups.s_bar
+            ));
+        }
+    }
+    let (xname, yname) = match (spec.severity, spec.total) {
+        (true, _) => ("s_bar_quarter_m_l3", "mu_bar_total"),
+        (false, true) => ("tau_c_x", "mu_bar_total_y"),
+        (false, false) => ("tau_c_x", "mu_bar_sliding_y"),
+    };
+    let csv = write(
+        ctx,
+        &format!("{stem}.csv"),
+        &runs_csv(&runs, xname, yname, |r| xy(r, spec)),
+    )?;
+    let points: Vec<(f64, f64)> = runs
+        .iter()
+        .filter_map(|r| xy(r, spec).map(|p| (r.problem.tau_c(), p.1)))
+        .chain(extra.iter().flat_map(|e| e.points.iter().copied()))
+        .collect();
+    let (fit_range, fit_all) = if spec.severity {
+        (None, None)
+    } else {
+        (
+            fit(&points
+                .iter()
+                .copied()
+                .filter(|p| p.0 >= FIT_TAU_C_MIN)
+                .collect::<Vec<_>>()),
+            fit(&points),
+        )
+    };
+    let mut files = vec![csv];
+    if let Some(svg) = scatter::svg(
+        stem,
+        &format!("{} — {}", spec.heading, sweep.title),
+        &runs,
+        &|r| xy(r, spec),
+        spec.severity,
+        spec.total,
+        extra,
+    )? {
+        files.push(write(ctx, &format!("{stem}.svg"), &svg)?);
+    }
+    let solved = runs.iter().filter(|r| r.record().is_some()).count();
+    let cached = runs.iter().filter(|r| r.cached).count();
+    let ours = match fit_range {
+        Some(f) => format!(
+            "c = {:.2} over {} points with tau_c >= {} (RMS deviation from Eq. 13 {:.1} %, largest {:.1} %); c = {:.2} over all {} solved",
+            f.c,
+            f.points,
+            FIT_TAU_C_MIN,
+            100.0 * f.rms_rel_dev,
+            100.0 * f.max_rel_dev,
+            fit_all.map(|a| a.c).unwrap_or(f64::NAN),
+            solved
+        ),
+        None => format!("{solved} of {} cases solved", runs.len()),
+    };
+    let built = Built {
+        name: "study",
+        title: format!("{}: {}", spec.heading, sweep.title),
+        cases: runs.len(),
+        solved: Some(solved),
+        cached: Some(cached),
+        level: Some(level),
+        fit: fit_range,
+        fit_all,
+        seconds: 0.0,
+        files,
+        paper_claim: String::new(),
+        ours,
+    };
+    Ok((built, runs))
+}

@@ -1,0 +1,78 @@
+//! The registry: every artefact of the paper as a named target, one module per kind of target
+//! beneath it (the tables, the sweep figures, Fig. 8). `repro list`, `repro <target>`,
+//! `repro all` and `make figures` all read [`TARGETS`].
+
+pub mod fig8;
+pub mod figure;
+pub mod tables;
+
+use super::target::{Built, Context};
+use std::time::Instant;
+
+/// What a target is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// Emitted from `cases/` data.
+    Table,
+    /// Computed.
+    Computed,
+}
+
+/// A target of `repro list`.
+#[derive(Debug, Clone, Copy)]
+pub struct Target {
+    /// Name on the command line.
+    pub name: &'static str,
+    /// One line for `repro list`.
+    pub description: &'static str,
+    /// Emitted or computed.
+    pub kind: Kind,
+    /// Level of `repro <target>` without `--level`: the cheapest level whose sliding `mu-bar`
+    /// is within 1 % of the Richardson extrapolation for the case that stands for the target
+    /// in `repro accuracy` (figures/accuracy_levels.csv). `make figures` builds every target
+    /// at the paper's working level instead.
+    pub default_level: Option<u32>,
+}
+
+/// Every target, in the paper's order.
+pub const TARGETS: &[Target] = &[
+    Target { name: "table1", description: "Lubricant properties alpha, eta0 at 40/60/100 C (from cases/lubricants.toml)", kind: Kind::Table, default_level: None },
+    Target { name: "table2", description: "Ranges of the operating parameters, with the derived M, L, S-bar ranges per lubricant", kind: Kind::Table, default_level: None },
+    Target { name: "table3", description: "The five contact-configuration cases, with M, L, S-bar, tau_c per geometry", kind: Kind::Table, default_level: None },
+    Target { name: "table4", description: "Grid convergence of Hc and sliding mu-bar for the Appendix case, levels 5-8, with wall times", kind: Kind::Computed, default_level: None },
+    Target { name: "fig1", description: "Total mu-bar vs S-bar^(1/4) M L^3, Barus-incompressible circular contact (125 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig2", description: "Total mu-bar vs tau_c, same sweep, Eq. (13) dashed", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig3", description: "Sliding mu-bar vs tau_c, same sweep, Eq. (13) dashed", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig4", description: "Sliding mu-bar vs tau_c, mineral oil A, Roelands + Dowson-Higginson, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig5", description: "Sliding mu-bar vs tau_c, traction fluid, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
+    Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed, default_level: Some(7) },
+    Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
+];
+
+/// Looks a target up.
+pub fn target(name: &str) -> Option<&'static Target> {
+    TARGETS.iter().find(|t| t.name == name)
+}
+
+/// Builds one target.
+pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
+    let start = Instant::now();
+    let Some(t) = target(name) else {
+        let known: Vec<&str> = TARGETS.iter().map(|t| t.name).collect();
+        return Err(format!(
+            "unknown target '{name}' (known: {})",
+            known.join(", ")
+        ));
+    };
+    let mut built = match t.name {
+        "table1" => tables::table1(ctx)?,
+        "table2" => tables::table2(ctx)?,
+        "table3" => tables::table3(ctx)?,
+        "table4" => tables::table4(ctx)?,
+        "fig8" => fig8::build(ctx)?,
+        figure_name => figure::build(figure_name, t.default_level, ctx)?,
+    };
+    built.seconds = start.elapsed().as_secs_f64();
+    Ok(built)
+}

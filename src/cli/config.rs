@@ -1,0 +1,230 @@
+//! Flags turned once into what the library takes: a [`Case`], solver parameters, a line
+//! problem, the pipeline's [`Context`]. Every error names the flag.
+
+use super::args::{DensityArg, DomainArg, RheologyArg, SolveArgs, TargetArgs, ViscosityArg};
+use anyhow::{anyhow, bail, Result};
+use repro::artefacts::cache::Cache;
+use repro::artefacts::run::RunProgress;
+use repro::artefacts::target::{check_writable, Context};
+use repro::physics::case::{
+    Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec,
+};
+use repro::physics::density::DensityLaw;
+use repro::physics::line_contact::{LineDimensionlessCase, LinePhysicalCase, LineProblem};
+use repro::physics::lubricant::{LubricantError, LubricantTable};
+use repro::physics::rheology::Rheology;
+use repro::physics::viscosity::ViscosityLaw;
+use repro::solver::grid::Domain;
+use repro::solver::{line, point};
+
+/// Checks a grid level flag.
+pub fn check_level(flag: &str, level: u32) -> Result<u32> {
+    if (point::MIN_LEVEL..=point::MAX_LEVEL).contains(&level) {
+        Ok(level)
+    } else {
+        bail!(
+            "{flag}: level {level} outside the supported range {}..={}",
+            point::MIN_LEVEL,
+            point::MAX_LEVEL
+        )
+    }
+}
+
+/// A case error as the flag it names.
+pub fn flag_error(e: CaseError) -> anyhow::Error {
+    match e {
+        CaseError::Field { field, message } => anyhow!("--{field}: {message}"),
+        CaseError::Lubricant(l @ LubricantError::Unknown { .. }) => anyhow!("--lubricant: {l}"),
+        CaseError::Lubricant(l @ LubricantError::Temperature { .. }) => {
+            anyhow!("--temperature: {l}")
+        }
+        other => anyhow!("{other}"),
+    }
+}
+
+/// The lubricant of the physical form (`repro solve`, `repro predict`): a lubricant of
+/// Table 1 at `--temperature`, or `--alpha` and `--eta0` given directly.
+pub fn lubricant_spec(
+    lubricant: Option<&str>,
+    temperature: Option<f64>,
+    alpha: Option<f64>,
+    eta0: Option<f64>,
+) -> Result<LubricantSpec> {
+    Ok(match (lubricant, alpha) {
+        (Some(name), None) => LubricantSpec::Named {
+            lubricant: name.to_string(),
+            temperature_c: need(temperature, "--temperature")?,
+        },
+        (None, Some(alpha)) => LubricantSpec::Given {
+            alpha_per_pa: alpha,
+            eta0_pa_s: need(eta0, "--eta0")?,
+        },
+        (Some(_), Some(_)) => bail!("--lubricant and --alpha cannot be mixed"),
+        (None, None) => bail!("--lubricant: required (or --alpha and --eta0)"),
+    })
+}
+
+fn need(v: Option<f64>, flag: &str) -> Result<f64> {
+    v.ok_or_else(|| anyhow!("{flag}: required"))
+}
+
+/// The physics flags over `defaults`.
+pub fn physics(
+    viscosity: Option<ViscosityArg>,
+    density: Option<DensityArg>,
+    rheology: Option<RheologyArg>,
+    defaults: Physics,
+) -> Physics {
+    Physics {
+        viscosity: match viscosity {
+            Some(ViscosityArg::Barus) => ViscosityLaw::Barus,
+            Some(ViscosityArg::Roelands) => ViscosityLaw::Roelands,
+            None => defaults.viscosity,
+        },
+        density: match density {
+            Some(DensityArg::Incompressible) => DensityLaw::Incompressible,
+            Some(DensityArg::DowsonHigginson) => DensityLaw::DowsonHigginson,
+            None => defaults.density,
+        },
+        rheology: match rheology {
+            Some(RheologyArg::Eyring) => Rheology::Eyring,
+            Some(RheologyArg::Newtonian) => Rheology::Newtonian,
+            None => defaults.rheology,
+        },
+    }
+}
+
+impl SolveArgs {
+    /// The case the flags describe (which form, and its physics).
+    pub fn case(&self) -> Result<Case> {
+        let dimensionless = self.m.is_some() || self.l.is_some() || self.s_bar.is_some();
+        let physical = self.lubricant.is_some()
+            || self.ph.is_some()
+            || self.um.is_some()
+            || self.tau0.is_some()
+            || self.alpha.is_some();
+        let spec = match (dimensionless, physical) {
+            (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--ph/--um/--tau0 (physical form) cannot be mixed"),
+            (false, false) => bail!("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help"),
+            (true, false) => Spec::Dimensionless(DimensionlessCase {
+                m: need(self.m, "--m")?,
+                l: need(self.l, "--l")?,
+                s_bar: need(self.s_bar, "--s-bar")?,
+                d: self.d.unwrap_or(1.0),
+                slip: self.slip.unwrap_or(0.01),
+                eta0_pa_s: self.eta0,
+                ph_pa: self.ph,
+            }),
+            (false, true) => Spec::Physical(PhysicalCase {
+                lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0)?,
+                ph_pa: need(self.ph, "--ph")?,
+                um_m_s: need(self.um, "--um")?,
+                slip: need(self.slip, "--slip")?,
+                tau0_pa: need(self.tau0, "--tau0")?,
+                rx_m: self.rx,
+                ry_m: self.ry.unwrap_or(self.rx),
+                e_prime_pa: self.e_prime,
+            }),
+        };
+        let defaults = if dimensionless {
+            Physics::default()
+        } else {
+            Physics::figs_4_to_7()
+        };
+        let physics = physics(self.viscosity, self.density, self.rheology, defaults);
+        Ok(Case { spec, physics })
+    }
+
+    /// Point-solver parameters from the numerics flags, for a contact of Moes load `m`.
+    pub fn params(&self, m: f64) -> Result<point::Params> {
+        Ok(point::Params {
+            level: check_level("--level", self.level.unwrap_or(7))?,
+            domain: match self.domain {
+                DomainArg::Auto => Domain::for_load(m),
+                DomainArg::Paper => Domain::default(),
+                DomainArg::Wide => Domain::wide(),
+            },
+            max_cycles: self.max_cycles,
+            newton_steps: self.newton_steps,
+            rolling_friction: !self.no_rolling,
+            ..point::Params::default()
+        })
+    }
+
+    /// The line-contact problem the flags describe (`--line`).
+    pub fn line_problem(&self) -> Result<LineProblem> {
+        self.reject_point_flags()?;
+        let case = self.case()?;
+        match &case.spec {
+            Spec::Physical(ph) => {
+                let line = LinePhysicalCase::from_point_case(ph, &LubricantTable::table1())
+                    .map_err(flag_error)?;
+                LineProblem::from_physical(&line, case.physics).map_err(flag_error)
+            }
+            Spec::Dimensionless(d) => {
+                let line = LineDimensionlessCase {
+                    m: d.m,
+                    l: d.l,
+                    s_bar: d.s_bar,
+                    slip: d.slip,
+                    eta0_pa_s: d.eta0_pa_s,
+                    ph_pa: d.ph_pa,
+                };
+                LineProblem::from_dimensionless(&line, case.physics).map_err(flag_error)
+            }
+        }
+    }
+
+    /// Line-solver parameters from the numerics flags (default level 8).
+    pub fn line_params(&self) -> Result<line::Params> {
+        let level = self.level.unwrap_or(line::Params::default().level);
+        if !(line::MIN_LEVEL..=line::MAX_LEVEL).contains(&level) {
+            bail!(
+                "--level: level {level} outside the line-contact range {}..={}",
+                line::MIN_LEVEL,
+                line::MAX_LEVEL
+            );
+        }
+        Ok(line::Params {
+            level,
+            max_iterations: self.max_cycles,
+            rolling_friction: !self.no_rolling,
+            ..line::Params::default()
+        })
+    }
+
+    /// Flags of the elliptical contact that a line contact cannot take.
+    fn reject_point_flags(&self) -> Result<()> {
+        if self.ry.is_some() {
+            bail!("--ry: a line contact has no Ry (it is infinite); drop --ry with --line");
+        }
+        if self.d.is_some() {
+            bail!("--d: a line contact has D = Rx/Ry = 0; drop --d with --line");
+        }
+        if !matches!(self.domain, DomainArg::Auto) {
+            bail!("--domain: the line contact has its own domain (-4.5 <= X <= 1.5); drop --domain with --line");
+        }
+        Ok(())
+    }
+}
+
+/// Where and how targets are built, from the target flags; `progress` and `warn` hear of the
+/// run.
+pub fn context<'a>(
+    args: &TargetArgs,
+    progress: &'a (dyn Fn(&str, RunProgress) + Sync),
+    warn: &'a (dyn Fn(String) + Sync),
+) -> Result<Context<'a>> {
+    if let Some(l) = args.level {
+        check_level("--level", l)?;
+    }
+    check_writable(&args.out).map_err(|e| anyhow!("--out: {e}"))?;
+    Ok(Context {
+        out: args.out.clone(),
+        cache: (!args.no_cache).then(|| Cache::new(&args.cache)),
+        level: args.level,
+        progress,
+        warn,
+        stride: 1,
+    })
+}

@@ -1,0 +1,198 @@
+//! `repro solve`: one elliptical contact (multigrid) or, with `--line`, one line contact
+//! (Newton), printed as a summary or as one JSON object with the same keys.
+
+use super::args::SolveArgs;
+use super::config::flag_error;
+use super::print::{line_progress, point_progress, print_failure, rolling_text, SolveReport};
+use anyhow::{Context as _, Result};
+use repro::artefacts::csv::{num, table, write_atomic};
+use repro::physics::case::Problem;
+use repro::physics::line_contact::{LineFilmFormula, LineProblem};
+use repro::physics::lubricant::LubricantTable;
+use repro::solver::line::{self, LineSolution};
+use repro::solver::point::{self, PointSolution};
+use serde_json::json;
+use std::path::Path;
+
+/// `repro solve`: false when the solve failed (after printing why).
+pub fn run(args: &SolveArgs) -> Result<bool> {
+    if args.line {
+        return run_line(args);
+    }
+    let case = args.case()?;
+    let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
+    let params = args.params(problem.groups.m)?;
+    let mut printer = point_progress(args.quiet);
+    let s = match point::solve(&problem, &params, Some(&mut printer)) {
+        Ok(s) => s,
+        Err(e) => {
+            print_failure(&e);
+            return Ok(false);
+        }
+    };
+    if let Some(path) = &args.fields {
+        let (g, p, h) = (&s.grid, &s.p, &s.h);
+        let rows = (0..g.py()).flat_map(|j| {
+            (0..g.px()).map(move |i| {
+                let k = g.idx(i, j);
+                [g.x(i), g.y(j), p[k], h[k]]
+            })
+        });
+        write_fields(path, &["X", "Y", "P", "H"], rows)?;
+    }
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&point_report(&problem, params.level, &s).json())?
+        );
+    } else {
+        print!("{}", point_text(&problem, &s));
+    }
+    Ok(true)
+}
+
+/// What a point-contact solve reports (`repro solve`, `repro predict --solve`).
+pub fn point_report<'a>(problem: &Problem, level: u32, s: &'a PointSolution) -> SolveReport<'a> {
+    let g = &problem.groups;
+    SolveReport {
+        level,
+        case: json!({
+            "m": g.m, "l": g.l, "s_bar": g.s_bar, "d": g.d, "slip": g.slip,
+            "alpha_bar": g.alpha_bar, "lambda": g.lambda, "kappa": g.kappa, "n": g.n,
+        }),
+        physics: problem.physics(),
+        film: &s.film,
+        friction: &s.friction,
+        info: &s.info,
+        tau_c: problem.tau_c(),
+    }
+}
+
+/// The pressure and film fields (`--fields`), one row per node.
+fn write_fields<const N: usize>(
+    path: &Path,
+    header: &[&str; N],
+    rows: impl Iterator<Item = [f64; N]>,
+) -> Result<()> {
+    let text = table(header, rows.map(|r| r.map(num).to_vec()));
+    write_atomic(path, &text).with_context(|| format!("--fields: cannot write {}", path.display()))
+}
+
+fn point_text(problem: &Problem, s: &PointSolution) -> String {
+    let g = &problem.groups;
+    let ph = problem.physics();
+    let tau_c = problem.tau_c();
+    format!(
+        "case        M = {:.4}, L = {:.4}, S-bar = {:.4e}, D = {:.4}, S = {}\n\
+         groups      alpha-bar = {:.4}, lambda = {:.4e}, kappa = {:.4}, N = {:.4e}\n\
+         physics     {:?}, {:?}, {:?}\n\
+         grid        {} x {}, {} cycles{}, residual {:.2e}, load error {:.1e}, {:.2} s\n\
+         film        Hc = {:.5e} (Moes {:.4}), Hmin = {:.5e} (Moes {:.4})  [H = h/c]\n\
+         friction    mu-bar sliding = {:.4}, rolling = {}, total = {:.4}\n\
+         mastercurve tau_c = {:.4e}, Eq. (13) asinh(tau_c/5) = {:.4}\n",
+        g.m,
+        g.l,
+        g.s_bar,
+        g.d,
+        g.slip,
+        g.alpha_bar,
+        g.lambda,
+        g.kappa,
+        g.n,
+        ph.viscosity,
+        ph.density,
+        ph.rheology,
+        s.grid.nx,
+        s.grid.ny,
+        s.info.cycles,
+        match s.info.newton_steps {
+            0 => String::new(),
+            n => format!(
+                " + {n} Newton-Krylov steps ({} GMRES iterations)",
+                s.info.krylov_iterations
+            ),
+        },
+        s.info.residual(),
+        s.info.load_error,
+        s.info.seconds,
+        s.film.h_central,
+        s.film.hc_moes,
+        s.film.h_min,
+        s.film.hmin_moes,
+        s.friction.sliding,
+        rolling_text(s.friction.rolling),
+        s.friction.total(),
+        tau_c,
+        (tau_c / 5.0).asinh(),
+    )
+}
+
+/// `repro solve --line`: the line contact (Fig. 7) from the same flags.
+fn run_line(args: &SolveArgs) -> Result<bool> {
+    let problem = args.line_problem()?;
+    let params = args.line_params()?;
+    let mut printer = line_progress(args.quiet);
+    let s = match line::solve(&problem, &params, Some(&mut printer)) {
+        Ok(s) => s,
+        Err(e) => {
+            print_failure(&e);
+            return Ok(false);
+        }
+    };
+    if let Some(path) = &args.fields {
+        let rows =
+            s.x.iter()
+                .zip(&s.p)
+                .zip(&s.h)
+                .map(|((x, p), h)| [*x, *p, *h]);
+        write_fields(path, &["X", "P", "H"], rows)?;
+    }
+    if args.json {
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&line_report(&problem, params.level, &s).json())?
+        );
+    } else {
+        print!("{}", line_text(&problem, &s));
+    }
+    Ok(true)
+}
+
+/// The point contact's keys; `d` and `kappa` are 0 for a line contact (`Ry`, `b` infinite).
+fn line_report<'a>(problem: &LineProblem, level: u32, s: &'a LineSolution) -> SolveReport<'a> {
+    let g = &problem.groups;
+    SolveReport {
+        level,
+        case: json!({
+            "contact": "line", "tau_c_film": "moes-line",
+            "m": g.m, "l": g.l, "s_bar": g.s_bar, "d": 0.0, "slip": g.slip,
+            "alpha_bar": g.alpha_bar, "lambda": g.lambda, "kappa": 0.0, "n": g.n,
+        }),
+        physics: problem.physics(),
+        film: &s.film,
+        friction: &s.friction,
+        info: &s.info,
+        tau_c: problem.tau_c(),
+    }
+}
+
+fn line_text(problem: &LineProblem, s: &LineSolution) -> String {
+    let g = &problem.groups;
+    let tau_c = problem.tau_c();
+    let rolling = rolling_text(s.friction.rolling);
+    format!(
+        "line case   M = {:.4}, L = {:.4}, S-bar = {:.4e}, S = {}\n\
+         groups      alpha-bar = {:.4}, lambda = {:.4e}, N = {:.4e}\n\
+         film        H(0) = {:.5e} (h Rx / a^2), Moes Hc = {:.4}, Hmin = {:.4} (Moes formula Hc = {:.4})\n\
+         friction    mu-bar sliding = {:.4}, rolling = {}, total = {:.4}\n\
+         tau_c       {:.4e} (Moes line film); Eq. (13) asinh(tau_c/5) = {:.4}\n\
+         solve       {} Newton iterations, residual {:.2e}, load error {:.1e}, {:.3} s\n",
+        g.m, g.l, g.s_bar, g.slip,
+        g.alpha_bar, g.lambda, g.n,
+        s.film.h_central, s.film.hc_moes, s.film.hmin_moes,
+        LineFilmFormula::Moes.hc(g.m, g.l),
+        s.friction.sliding, rolling, s.friction.total(),
+        tau_c, (tau_c / 5.0).asinh(),
+        s.info.cycles, s.info.residual(), s.info.load_error, s.info.seconds,
+    )
+}
