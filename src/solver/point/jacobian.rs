@@ -4,7 +4,8 @@
 //! as the sparse preconditioner, and assembled whole as the dense oracle of the tests.
 //!
 //! Row `c` (an active node) is `d(r_c / s_c)`, `r = f - L(P)` the Reynolds residual and `s`
-//! the row scales; the unknowns are `P` at the active nodes and `Delta`; the last row is the
+//! the row scales, or, at a node that cavitates (the `P` branch of `min(P, r / s)`), the
+//! identity; the unknowns are `P` at the active nodes and `Delta`; the last row is the
 //! force balance `sum P hx hy / LOAD`. With `L_c = sum_nb xi_nb (P_nb - P_c) - wedge_c`,
 //! `xi` the half-point means of `eps = rho H^3 / (eta lambda)` and the wedge the upstream
 //! difference of `rho H`:
@@ -45,6 +46,8 @@ fn wedge_weights(i: usize) -> &'static [(isize, f64)] {
 pub(crate) struct Jacobian {
     /// The active nodes, in unknown order.
     pub active: Vec<usize>,
+    /// Per unknown: whether its row is the identity (a node that cavitates).
+    pub cavitating: Vec<bool>,
     /// Each node's unknown, `usize::MAX` for a node that stays dry.
     pub column: Vec<usize>,
     /// Row scales `s`.
@@ -69,8 +72,15 @@ struct Row {
 }
 
 impl Jacobian {
-    /// Linearises `level` (film and coefficients current) for the `active` nodes.
-    pub fn new(level: &Level, model: &Model, active: Vec<usize>, scale: Vec<f64>) -> Self {
+    /// Linearises `level` (film and coefficients current) for the `active` nodes, those
+    /// marked in `cavitating` with identity rows.
+    pub fn new(
+        level: &Level,
+        model: &Model,
+        active: Vec<usize>,
+        cavitating: Vec<bool>,
+        scale: Vec<f64>,
+    ) -> Self {
         let n = level.grid.len();
         let mut column = vec![usize::MAX; n];
         for (r, &k) in active.iter().enumerate() {
@@ -84,6 +94,7 @@ impl Jacobian {
         }
         Jacobian {
             active,
+            cavitating,
             column,
             scale,
             d_dp,
@@ -128,6 +139,10 @@ impl Jacobian {
         let (p, dp) = (&level.p, &self.dp);
         let px = g.px();
         for (r, &c) in self.active.iter().enumerate() {
+            if self.cavitating[r] {
+                out[r] = v[r];
+                continue;
+            }
             let i = c % px;
             let [xw, xe, xs, xn] = level.xi(i, c / px);
             let (w, e, s, nn) = (c - 1, c + 1, c - px, c + px);
@@ -219,6 +234,11 @@ impl Jacobian {
         let mut delta = Vec::with_capacity(self.active.len());
         let mut local_at = vec![0.0; g.len()];
         for (r, &c) in self.active.iter().enumerate() {
+            if self.cavitating[r] {
+                emit(r, r, 1.0);
+                delta.push(0.0);
+                continue;
+            }
             let row = self.row(level, c);
             let inv = -1.0 / self.scale[c];
             for &(m, v) in &row.local {

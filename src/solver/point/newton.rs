@@ -150,13 +150,19 @@ pub(crate) fn iterate(
         if it > 1 {
             eta = forcing(eta, ev.norm, norm_before);
         }
-        // Reynolds rows: the pressurised nodes and the dry ones whose residual asks for
-        // pressure; the others stay dry.
+        // The semi-smooth linearisation of min(P, r / c): a Reynolds row at the nodes
+        // where r / c < P (pressurised ones, and dry ones whose residual asks for
+        // pressure), the identity at the pressurised nodes where P <= r / c (the node
+        // cavitates: the full step sets it to zero); the dry nodes with r / c >= 0 stay dry.
         let active: Vec<usize> = (1..g.ny)
             .flat_map(|j| (1..g.nx).map(move |i| g.idx(i, j)))
             .filter(|&k| level.p[k] > 0.0 || ev.phi[k] < 0.0)
             .collect();
-        let mut jac = Jacobian::new(level, model, active, scale.clone());
+        let cavitating: Vec<bool> = active
+            .iter()
+            .map(|&k| level.p[k] > 0.0 && ev.phi[k] == level.p[k])
+            .collect();
+        let mut jac = Jacobian::new(level, model, active, cavitating, scale.clone());
         let Some(preconditioner) = jac.preconditioner(level, limits.box_radius, true) else {
             return outcome;
         };
@@ -183,12 +189,19 @@ pub(crate) fn iterate(
         // Backtracking on |phi|: halve the step until it decreases (or the smallest damping).
         let p_old = level.p.clone();
         let h0_old = *h0;
-        let column = &jac.column;
+        let (column, cavitating) = (&jac.column, &jac.cavitating);
         line_search::backtrack(ev.norm, |omega| {
             for (k, &c) in column.iter().enumerate() {
-                if c != usize::MAX {
-                    level.p[k] = (p_old[k] + omega * step[c]).max(0.0);
+                if c == usize::MAX {
+                    continue;
                 }
+                // A cavitating node's step is -P exactly (GMRES solves its identity row
+                // only to the forcing term): the full step sets it to zero.
+                level.p[k] = if cavitating[c] {
+                    (1.0 - omega) * p_old[k]
+                } else {
+                    (p_old[k] + omega * step[c]).max(0.0)
+                };
             }
             *h0 = h0_old + omega * step[n - 1];
             evaluate(level, model, *h0, &scale).norm
@@ -289,7 +302,8 @@ mod tests {
             .filter(|&k| level.p[k] > 0.0)
             .collect();
         assert!(active.len() > 100, "{} pressurised nodes", active.len());
-        Jacobian::new(level, model, active, scale)
+        let cavitating = vec![false; active.len()];
+        Jacobian::new(level, model, active, cavitating, scale)
     }
 
     /// A direction with every node moving differently, and `Delta` moving too.
