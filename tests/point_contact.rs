@@ -10,7 +10,7 @@ use repro::physics::film::hc_nijenbanning;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::solver::grid::Domain;
-use repro::solver::output::SolveError;
+use repro::solver::output::{Method, SolveError};
 use repro::solver::point::{solve, Params, PointSolution};
 
 fn problem(case: &Case) -> Problem {
@@ -73,9 +73,9 @@ fn assert_sound(s: &PointSolution, what: &str) {
         s.h.iter().all(|h| h.is_finite() && *h > 0.0),
         "{what}: H <= 0 or non-finite"
     );
-    // Eq. (7) to 1e-3, the requirement (the solver's own tolerance is 1e-4).
+    // Eq. (7) to 1e-4: the solver's own load tolerance, which a converged solve meets.
     assert!(
-        s.info.load_error < 1e-3,
+        s.info.load_error < 1e-4,
         "{what}: load error {}",
         s.info.load_error
     );
@@ -167,41 +167,169 @@ fn multigrid_converges_at_a_steady_rate() {
     );
 }
 
+/// A hard case at the paper's working level 7 (on the domain the CLI and the sweeps choose
+/// by load), with the checks of [`assert_sound`]; returns the solution.
+fn hard_case_at_level_7(case: &Case, what: &str) -> PointSolution {
+    let p = problem(case);
+    let params = Params {
+        domain: Domain::for_load(p.groups.m),
+        ..Params::at_level(7)
+    };
+    let s = solve(&p, &params, None).unwrap_or_else(|e| panic!("{what}: {e}"));
+    assert_sound(&s, what);
+    assert_eq!(s.info.level, 7, "{what}: the film needed no finer grid");
+    s
+}
+
 #[test]
 fn hard_case_barus_m1000_l15_full_slip() {
-    let p = problem(&dimensionless(1000.0, 15.0, 1.0, Rheology::Eyring));
-    assert!(
-        p.groups.alpha_bar > 54.0,
-        "alpha-bar {}",
-        p.groups.alpha_bar
-    );
-    let s = solve(&p, &Params::at_level(5), None).unwrap();
-    assert_sound(&s, "M 1000 L 15 S-bar 1");
+    let c = dimensionless(1000.0, 15.0, 1.0, Rheology::Eyring);
+    assert!(problem(&c).groups.alpha_bar > 54.0);
+    hard_case_at_level_7(&c, "M 1000 L 15 S-bar 1");
 }
 
 #[test]
 fn hard_case_light_load_tiny_slip() {
-    let p = problem(&dimensionless(50.0, 1.0, 0.01, Rheology::Eyring));
-    let s = solve(&p, &Params::at_level(5), None).unwrap();
-    assert_sound(&s, "M 50 L 1 S-bar 0.01");
+    hard_case_at_level_7(
+        &dimensionless(50.0, 1.0, 0.01, Rheology::Eyring),
+        "M 50 L 1 S-bar 0.01",
+    );
 }
 
 #[test]
 fn hard_case_narrow_ellipse_at_3_gpa() {
     // Table 3's fifth case with Rx/Ry = 1/5: mineral oil A, 3 GPa, 40 C, 7 m/s, 0.1 %, 8 MPa.
-    // Level 6: at level 5 (64 x 64) the outlet constriction is not resolved and H < 0.
-    let p = problem(&physical("mineral-oil-a", 40.0, 3e9, 7.0, 0.001, 8e6, 0.2));
-    assert!((p.groups.kappa - 0.3460).abs() < 5e-5);
-    let s = solve(&p, &Params::at_level(6), None).unwrap();
-    assert_sound(&s, "Rx/Ry = 1/5, 3 GPa");
+    let c = physical("mineral-oil-a", 40.0, 3e9, 7.0, 0.001, 8e6, 0.2);
+    assert!((problem(&c).groups.kappa - 0.3460).abs() < 5e-5);
+    hard_case_at_level_7(&c, "Rx/Ry = 1/5, 3 GPa");
 }
 
 #[test]
-fn hard_case_5p4e_at_3_gpa() {
+fn hard_case_5p4e_at_3_gpa_level_7() {
+    // M = 192, L = 49.9, alpha-bar = 105: the cycles diverge at level 7 and the
+    // grid-sequenced Newton-Krylov finish converges it.
+    let s = hard_case_at_level_7(
+        &physical("5p4e", 40.0, 3e9, 7.0, 0.005, 6e6, 1.0),
+        "5P4E, 40 C, 3 GPa, 7 m/s",
+    );
+    assert_eq!(s.info.method, Method::NewtonKrylov);
+    assert!(s.info.newton_steps > 0 && s.info.krylov_iterations >= s.info.newton_steps);
+}
+
+#[test]
+fn hard_case_5p4e_fast_and_sliding() {
+    hard_case_at_level_7(
+        &physical("5p4e", 40.0, 3e9, 12.0, 0.02, 8e6, 1.0),
+        "5P4E, 40 C, 3 GPa, 12 m/s, 2 %",
+    );
+}
+
+#[test]
+fn hard_case_traction_fluid_at_3_gpa() {
+    hard_case_at_level_7(
+        &physical("traction-fluid", 40.0, 3e9, 2.0, 0.001, 4e6, 1.0),
+        "traction fluid, 40 C, 3 GPa, 2 m/s",
+    );
+}
+
+#[test]
+fn hard_case_a_users_very_viscous_oil_on_an_ellipse() {
+    // In no sweep: a user's own alpha = 35 /GPa and eta0 = 2 Pa s (L = 76, alpha-bar 88),
+    // 2.5 GPa, Rx/Ry = 1/2.
+    let rx = 1.03875e-2;
+    let c = Case {
+        spec: Spec::Physical(PhysicalCase {
+            lubricant: LubricantSpec::Given {
+                alpha_per_pa: 3.5e-8,
+                eta0_pa_s: 2.0,
+            },
+            ph_pa: 2.5e9,
+            um_m_s: 5.0,
+            slip: 0.01,
+            tau0_pa: 5e6,
+            rx_m: rx,
+            ry_m: 2.0 * rx,
+            e_prime_pa: 226e9,
+        }),
+        physics: Physics::figs_4_to_7(),
+    };
+    assert!(problem(&c).groups.l > 70.0);
+    hard_case_at_level_7(&c, "alpha 35/GPa, eta0 2 Pa s, Rx/Ry 1/2");
+}
+
+#[test]
+fn hard_case_5p4e_slow_on_an_ellipse() {
+    // In no sweep: 5P4E at 1 m/s (M = 2243, L = 30.7) with Rx/Ry = 1/3.
+    hard_case_at_level_7(
+        &physical("5p4e", 40.0, 3e9, 1.0, 0.005, 6e6, 1.0 / 3.0),
+        "5P4E, 1 m/s, Rx/Ry 1/3",
+    );
+}
+
+#[test]
+fn cycles_and_newton_krylov_agree_where_both_converge() {
+    // The Appendix case at level 6 converges by the cycles alone; with one cycle allowed
+    // the Newton-Krylov finish takes over (the level-5 cycles, then Newton at level 6). Both
+    // solve the same discrete equations to the solver's tolerance (residual 1e-6 or a
+    // pressure change of 3e-7, which leave the film within 1e-4 of its converged value):
+    // they must agree to that.
+    let p = appendix_problem();
+    let cycles = solve(&p, &Params::at_level(6), None).unwrap();
+    assert_eq!(cycles.info.method, Method::Cycles);
+    let newton = solve(
+        &p,
+        &Params {
+            max_cycles: 1,
+            ..Params::at_level(6)
+        },
+        None,
+    )
+    .unwrap();
+    assert_eq!(newton.info.method, Method::NewtonKrylov);
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    assert!(
+        rel(newton.film.h_central, cycles.film.h_central) < 1e-4,
+        "Hc {} vs {}",
+        newton.film.h_central,
+        cycles.film.h_central
+    );
+    assert!(
+        rel(newton.friction.sliding, cycles.friction.sliding) < 1e-4,
+        "mu-bar {} vs {}",
+        newton.friction.sliding,
+        cycles.friction.sliding
+    );
+}
+
+#[test]
+fn a_closed_film_is_refined_to_the_next_level() {
+    // Mineral oil A at 60 C, 3 GPa, 2 m/s (M = 11 070, a Fig. 4 case): at level 7 the
+    // converged film closes at the side lobes (min H = -4e-4); the solver adds level 8,
+    // where it is open, and says so.
+    let c = physical("mineral-oil-a", 60.0, 3e9, 2.0, 0.001, 4e6, 1.0);
+    let p = problem(&c);
+    let s = solve(&p, &Params::at_level(7), None).unwrap();
+    assert_eq!(s.info.level, 8);
+    assert_eq!(s.grid.nx, 512);
+    assert_sound(&s, "M 11 070 refined");
+    let closed = solve(
+        &p,
+        &Params {
+            film_refinement_levels: 0,
+            ..Params::at_level(7)
+        },
+        None,
+    );
+    assert!(
+        matches!(closed, Err(SolveError::FilmCollapse { .. })),
+        "{closed:?}"
+    );
+}
+
+#[test]
+fn hard_case_5p4e_at_level_5_matches_plain_relaxation() {
     // M = 192, L = 49.9, alpha-bar = 105: the multigrid cycles stall at a residual ~5e-2
-    // (docs/hard-cases.md) and the Newton finish on the finest level converges it. Level 5:
-    // its ~3000 pressurised nodes make a dense Newton system of seconds; level 6 (~14000)
-    // takes minutes per step, beyond what a test should cost.
+    // (docs/hard-cases.md) and the Newton-Krylov finish converges it (paper's domain).
     let p = problem(&physical("5p4e", 40.0, 3e9, 7.0, 0.005, 6e6, 1.0));
     assert!((p.groups.l - 49.92).abs() < 0.01, "L = {}", p.groups.l);
     let s = solve(&p, &Params::at_level(5), None).unwrap();

@@ -25,8 +25,12 @@ pub struct Record {
     pub mu_bar_sliding: f64,
     /// Rolling reduced friction (when computed).
     pub mu_bar_rolling: Option<f64>,
+    /// The level solved on: the one asked for, or a finer one where the film needed it.
+    pub level: u32,
     /// Finest-level cycles.
     pub cycles: usize,
+    /// Newton-Krylov steps of the finish (0 where the cycles converged).
+    pub newton_steps: usize,
     /// Final residual.
     pub residual: f64,
     /// Force-balance error.
@@ -44,7 +48,9 @@ impl Record {
             hmin_moes: s.film.hmin_moes,
             mu_bar_sliding: s.friction.sliding,
             mu_bar_rolling: s.friction.rolling,
+            level: s.info.level,
             cycles: s.info.cycles,
+            newton_steps: s.info.newton_steps,
             residual: s.info.residual(),
             load_error: s.info.load_error,
             seconds: s.info.seconds,

@@ -27,7 +27,7 @@ pub const REL_TOL: f64 = 1e-4;
 pub const DEV_TOL: f64 = 1e-4;
 
 /// Columns that say how a result was obtained, not what it is: never compared.
-const IGNORED: &[&str] = &["seconds", "cached", "cycles", "residual"];
+const IGNORED: &[&str] = &["seconds", "cached", "cycles", "newton_steps", "residual"];
 
 /// One difference between a baseline and a new result.
 #[derive(Debug, Clone, PartialEq)]

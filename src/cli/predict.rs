@@ -110,7 +110,7 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
 
     if args.json {
         let solve = solved.as_ref().map(|(p, s)| {
-            let mut v = point_report(p, level, s).json();
+            let mut v = point_report(p, s).json();
             v["mu_sliding"] = json!(c.friction(s.friction.sliding, tau0));
             v
         });

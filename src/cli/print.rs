@@ -10,8 +10,6 @@ use serde_json::{json, Map, Value};
 
 /// What every solve reports, point or line contact: the keys of `repro solve --json`.
 pub struct SolveReport<'a> {
-    /// Grid level.
-    pub level: u32,
     /// The case's groups and anything else that names the contact (`contact` for a line).
     pub case: Value,
     /// The physics the problem composes.
@@ -40,7 +38,6 @@ impl SolveReport<'_> {
         add(to_json(self.film));
         add(to_json(self.info));
         add(json!({
-            "level": self.level,
             "viscosity": self.physics.viscosity,
             "density": self.physics.density,
             "rheology": self.physics.rheology,

@@ -43,7 +43,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     if args.json {
         println!(
             "{}",
-            serde_json::to_string_pretty(&point_report(&problem, params.level, &s).json())?
+            serde_json::to_string_pretty(&point_report(&problem, &s).json())?
         );
     } else {
         print!("{}", point_text(&problem, &s));
@@ -52,10 +52,9 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
 }
 
 /// What a point-contact solve reports (`repro solve`, `repro predict --solve`).
-pub fn point_report<'a>(problem: &Problem, level: u32, s: &'a PointSolution) -> SolveReport<'a> {
+pub fn point_report<'a>(problem: &Problem, s: &'a PointSolution) -> SolveReport<'a> {
     let g = &problem.groups;
     SolveReport {
-        level,
         case: json!({
             "m": g.m, "l": g.l, "s_bar": g.s_bar, "d": g.d, "slip": g.slip,
             "alpha_bar": g.alpha_bar, "lambda": g.lambda, "kappa": g.kappa, "n": g.n,
@@ -150,7 +149,7 @@ fn run_line(args: &SolveArgs) -> Result<bool> {
     if args.json {
         println!(
             "{}",
-            serde_json::to_string_pretty(&line_report(&problem, params.level, &s).json())?
+            serde_json::to_string_pretty(&line_report(&problem, &s).json())?
         );
     } else {
         print!("{}", line_text(&problem, &s));
@@ -159,10 +158,9 @@ fn run_line(args: &SolveArgs) -> Result<bool> {
 }
 
 /// The point contact's keys; `d` and `kappa` are 0 for a line contact (`Ry`, `b` infinite).
-fn line_report<'a>(problem: &LineProblem, level: u32, s: &'a LineSolution) -> SolveReport<'a> {
+fn line_report<'a>(problem: &LineProblem, s: &'a LineSolution) -> SolveReport<'a> {
     let g = &problem.groups;
     SolveReport {
-        level,
         case: json!({
             "contact": "line", "tau_c_film": "moes-line",
             "m": g.m, "l": g.l, "s_bar": g.s_bar, "d": 0.0, "slip": g.slip,

@@ -60,6 +60,9 @@ impl Method {
 /// How the solve went.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Info {
+    /// The level of the grid solved on: the one asked for, or a finer one where the film
+    /// needed it.
+    pub level: u32,
     /// What converged the solve.
     pub method: Method,
     /// Multigrid cycles on the finest level (after the full-multigrid start).

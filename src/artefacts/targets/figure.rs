@@ -116,7 +116,9 @@ pub fn runs_csv(
         spec_x,
         spec_y,
         "rel_dev_eq13",
+        "level",
         "cycles",
+        "newton_steps",
         "residual",
         "seconds",
         "cached",
@@ -167,7 +169,9 @@ pub fn runs_csv(
                         opt(point.map(|p| p.0)),
                         opt(point.map(|p| p.1)),
                         opt(point.map(|p| p.1 / eq13 - 1.0)),
+                        rec.level.to_string(),
                         rec.cycles.to_string(),
+                        rec.newton_steps.to_string(),
                         num(rec.residual),
                         format!("{:.3}", rec.seconds),
                     ],
@@ -176,9 +180,10 @@ pub fn runs_csv(
                 Outcome::Failed {
                     residual_history, ..
                 } => {
-                    let mut cells = vec![String::new(); 12];
-                    cells[9] = residual_history.len().to_string();
-                    cells[10] = opt(residual_history.last().copied());
+                    // Cycles and Newton steps are not told apart in a failure's history.
+                    let mut cells = vec![String::new(); 14];
+                    cells[10] = residual_history.len().to_string();
+                    cells[12] = opt(residual_history.last().copied());
                     let kind = r.failure_kind().unwrap_or("failed");
                     (cells, format!("failed: {kind}"))
                 }

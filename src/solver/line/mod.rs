@@ -281,6 +281,7 @@ pub fn solve(
         film,
         friction,
         info: Info {
+            level: params.level,
             method: Method::Newton,
             newton_steps: 0,
             krylov_iterations: 0,

@@ -39,6 +39,14 @@ impl Hierarchy {
         }
     }
 
+    /// Adds a level twice as fine as the finest on `domain` and returns its index.
+    pub fn add_finer_level(&mut self, domain: &Domain) -> usize {
+        let level = self.finest().grid.nx.trailing_zeros();
+        let grid = Grid::level(domain, level);
+        self.levels.push(Level::new(grid, &self.model));
+        self.levels.len() - 1
+    }
+
     pub fn finest(&self) -> &Level {
         self.levels
             .last()

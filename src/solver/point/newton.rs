@@ -403,6 +403,10 @@ mod tests {
     fn preconditioned_krylov_solve_matches_the_dense_solve() {
         let (mut level, model, _) = setup();
         let mut jac = linearise(&mut level, &model);
+        // Some rows of cavitating nodes (identity rows), as a Newton step has them.
+        for r in (0..jac.active.len()).step_by(17) {
+            jac.cavitating[r] = true;
+        }
         let n = jac.len();
         let b = direction(n);
         let mut expect = b.clone();
