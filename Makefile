@@ -2,7 +2,7 @@
 CARGO ?= cargo
 LEVEL ?= 7
 
-.PHONY: build test figures table4 snapshots check lint clean
+.PHONY: build test figures table4 snapshots check lint bench clean
 
 build:
 	$(CARGO) build --release
@@ -26,6 +26,11 @@ check: build
 
 table4: build
 	./target/release/repro table4
+
+# Criterion benchmarks (benches/solve.rs): the 5P4E hard case at level 7, the accuracy
+# study's cases per level, the cost of each effect, one whole target.
+bench:
+	$(CARGO) bench --bench solve
 
 lint:
 	$(CARGO) fmt --all -- --check

@@ -1,6 +1,6 @@
-//! Criterion benchmarks: one point-contact solve per level for the cases of the accuracy
-//! study (`repro accuracy`), the cost of each optional physical effect on the Table 4 case,
-//! and one whole small target.
+//! Criterion benchmarks: the 5P4E hard case at level 7 (Newton-Krylov), one point-contact
+//! solve per level for the cases of the accuracy study (`repro accuracy`), the cost of each
+//! optional physical effect on the Table 4 case, and one whole small target.
 //!
 //! `cargo bench` runs everything (levels 5-7; level 8 is measured by `repro accuracy` only,
 //! a sample of ten level-8 solves would take minutes). Under `cargo test --all-targets` the
@@ -12,7 +12,9 @@ use criterion::{BenchmarkId, Criterion};
 use repro::artefacts::accuracy::{study_cases, Contact};
 use repro::artefacts::target::Context;
 use repro::artefacts::targets::build;
-use repro::physics::case::{Physics, Problem};
+use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::physics::lubricant::LubricantTable;
+use repro::solver::grid::Domain;
 use repro::physics::density::DensityLaw;
 use repro::physics::rheology::Rheology;
 use repro::physics::viscosity::ViscosityLaw;
@@ -143,8 +145,45 @@ fn target(c: &mut Criterion) {
     let _ = std::fs::remove_dir_all(out);
 }
 
+/// The hardest case of the paper's range: 5P4E at 40 C, 3 GPa, 7 m/s, S = 0.5 %,
+/// tau0 = 6 MPa (M = 192, L = 49.9, alpha-bar = 105), whose cycles diverge at level 7 and
+/// which the grid-sequenced Newton-Krylov finish converges (level 5 in test mode).
+fn hard_case(c: &mut Criterion) {
+    let rx = 1.03875e-2;
+    let case = Case {
+        spec: Spec::Physical(PhysicalCase {
+            lubricant: LubricantSpec::Named {
+                lubricant: "5p4e".into(),
+                temperature_c: 40.0,
+            },
+            ph_pa: 3e9,
+            um_m_s: 7.0,
+            slip: 0.005,
+            tau0_pa: 6e6,
+            rx_m: rx,
+            ry_m: rx,
+            e_prime_pa: 226e9,
+        }),
+        physics: Physics::figs_4_to_7(),
+    };
+    let problem = Problem::from_case(&case, &LubricantTable::table1()).expect("valid case");
+    let level = if full() { 7 } else { 5 };
+    let params = Params {
+        domain: Domain::for_load(problem.groups.m),
+        ..Params::at_level(level)
+    };
+    let mut group = c.benchmark_group("hard-case");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(60));
+    group.bench_function(format!("5p4e-40c-3gpa-level{level}"), |b| {
+        b.iter(|| solve(&problem, &params, None).expect("the hard case converges"))
+    });
+    group.finish();
+}
+
 fn main() {
     let mut c = Criterion::default().configure_from_args();
+    hard_case(&mut c);
     levels(&mut c);
     effects(&mut c);
     target(&mut c);
