@@ -385,15 +385,15 @@ fn finish(
 
 /// The Newton-Krylov finish, grid-sequenced: level `newton_start_level` converged from
 /// its state in `starts` (its cycles, then Newton where they stall), then Newton on each
-/// finer level from the interpolated solution of the one below. `add` hears of each
-/// level's outcome and says whether it converged. Whether the finest level converged.
+/// finer level from the interpolated solution of the one below; `work` counts the steps.
+/// Whether the finest level converged.
 fn grid_sequence(
     mg: &mut Hierarchy,
     starts: &[State],
     params: &Params,
     observe: &mut dyn FnMut(&Progress),
     history: &mut Vec<f64>,
-    add: &mut dyn FnMut(&newton::Outcome) -> bool,
+    work: &mut Work,
 ) -> bool {
     let top = mg.levels.len() - 1;
     let first = (params
@@ -417,13 +417,29 @@ fn grid_sequence(
             converged = false;
         }
         if !converged {
-            converged = add(&finish(mg, k, params, observe, history));
+            converged = work.add(&finish(mg, k, params, observe, history));
             if !converged {
                 return false;
             }
         }
     }
     converged
+}
+
+/// Newton-Krylov steps and GMRES iterations over the levels of a finish.
+#[derive(Default)]
+struct Work {
+    newton_steps: usize,
+    krylov_iterations: usize,
+}
+
+impl Work {
+    /// Counts a level's outcome; whether it converged.
+    fn add(&mut self, outcome: &newton::Outcome) -> bool {
+        self.newton_steps += outcome.iterations;
+        self.krylov_iterations += outcome.krylov_iterations;
+        outcome.converged
+    }
 }
 
 /// The best residual of stalled finest-level cycles below which the Newton-Krylov finish
@@ -503,7 +519,7 @@ pub fn solve(
     let cycles = finest.history.len();
     let mut history = finest.history;
     let mut method = Method::Cycles;
-    let (mut newton_steps, mut krylov_iterations) = (0, 0);
+    let mut work = Work::default();
     let mut converged = finest.converged;
     if !converged && params.newton_steps == 0 {
         if let Some(cycle) = finest.non_finite {
@@ -516,17 +532,12 @@ pub fn solve(
     }
     if !converged && params.newton_steps > 0 {
         method = Method::NewtonKrylov;
-        let mut add = |o: &newton::Outcome| {
-            newton_steps += o.iterations;
-            krylov_iterations += o.krylov_iterations;
-            o.converged
-        };
         // Cycles that crept close to the solution (a heavily loaded case converging too
         // slowly) hand their best state to Newton on the finest level; otherwise, or where
         // that fails, the grid sequence.
         if finest.best_residual < DIRECT_FINISH_RESIDUAL {
             finest.best.restore(&mut mg, top);
-            converged = add(&finish(&mut mg, top, params, &mut observe, &mut history));
+            converged = work.add(&finish(&mut mg, top, params, &mut observe, &mut history));
         }
         if !converged {
             starts.push(finest.best);
@@ -536,7 +547,7 @@ pub fn solve(
                 params,
                 &mut observe,
                 &mut history,
-                &mut add,
+                &mut work,
             );
         }
     }
@@ -562,10 +573,7 @@ pub fn solve(
         mg.make_top(k);
         mg.interpolate(k);
         method = Method::NewtonKrylov;
-        let outcome = finish(&mut mg, k, params, &mut observe, &mut history);
-        newton_steps += outcome.iterations;
-        krylov_iterations += outcome.krylov_iterations;
-        if !outcome.converged {
+        if !work.add(&finish(&mut mg, k, params, &mut observe, &mut history)) {
             return Err(SolveError::NotConverged {
                 cycles,
                 tolerance: params.tolerance,
@@ -603,8 +611,8 @@ pub fn solve(
             level: level_number(fine),
             method,
             cycles,
-            newton_steps,
-            krylov_iterations,
+            newton_steps: work.newton_steps,
+            krylov_iterations: work.krylov_iterations,
             residual_history: history,
             load_error,
             seconds: start.elapsed().as_secs_f64(),
