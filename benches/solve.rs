@@ -13,11 +13,11 @@ use repro::artefacts::accuracy::{study_cases, Contact};
 use repro::artefacts::target::Context;
 use repro::artefacts::targets::build;
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
-use repro::physics::lubricant::LubricantTable;
-use repro::solver::grid::Domain;
 use repro::physics::density::DensityLaw;
+use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::physics::viscosity::ViscosityLaw;
+use repro::solver::grid::Domain;
 use repro::solver::point::{solve, Params};
 use std::time::Duration;
 
