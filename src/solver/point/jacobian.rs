@@ -34,7 +34,7 @@ fn central(f: impl Fn(f64) -> (f64, f64, f64), x: f64, scale: f64) -> [f64; 3] {
 
 /// The upstream wedge difference at column `i`: `(offset along X, weight)` of `rho H`
 /// (second order from `i = 2`, first order at `i = 1`), as [`Level::wedge`] uses it.
-fn wedge_weights(i: usize) -> &'static [(isize, f64)] {
+pub(super) fn wedge_weights(i: usize) -> &'static [(isize, f64)] {
     if i >= 2 {
         &[(0, 1.5), (-1, -2.0), (-2, 0.5)]
     } else {

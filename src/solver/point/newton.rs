@@ -6,11 +6,11 @@
 //! complementarity form of Reynolds with cavitation, `min(P, r / c) = 0` with `r = f - L(P)`
 //! the residual of [`Level::residual`] (the multigrid's own finest-level equations) and `c`
 //! the magnitude of its own diagonal (so `r / c` is a pressure): either `P = 0` and the fluid
-//! would cavitate, or `P > 0` and Reynolds holds. Plus the force balance. The unknowns of a
-//! step are the pressurised nodes and the dry ones whose residual asks for pressure
-//! (`r / c < 0`), each with its Reynolds row (a pressurised node that should cavitate is
-//! lowered by the step and projected on `P >= 0`, not zeroed at once); the other nodes stay
-//! at `P = 0`.
+//! would cavitate, or `P > 0` and Reynolds holds. Plus the force balance. The step
+//! linearises `min(P, r / c)` semi-smoothly: a Reynolds row where `r / c < P` (the
+//! pressurised nodes, and the dry ones whose residual asks for pressure), the identity where
+//! a pressurised node has `P <= r / c` (it cavitates: the full step sets it to zero
+//! exactly); the dry nodes with `r / c >= 0` stay at `P = 0`.
 //!
 //! The Jacobian is full, because every pressure moves every film value through the elastic
 //! kernel; it is never formed. Each Newton system is solved by right-preconditioned GMRES
@@ -21,7 +21,7 @@
 //! ([`Jacobian::preconditioner`]). Globalisation: backtracking on the residual norm with
 //! projection on `P >= 0`.
 
-use super::jacobian::Jacobian;
+use super::jacobian::{wedge_weights, Jacobian};
 use super::level::{Level, Model, LOAD};
 use crate::solver::{gmres, line_search};
 
@@ -34,7 +34,7 @@ fn row_scales(level: &Level) -> Vec<f64> {
     for j in 1..g.ny {
         for i in 1..g.nx {
             let k = g.idx(i, j);
-            let wedge = if i >= 2 { 1.5 } else { 1.0 } * level.rho[k] * d0 / g.hx;
+            let wedge = wedge_weights(i)[0].1 * level.rho[k] * d0 / g.hx;
             c[k] = (level.xi(i, j).iter().sum::<f64>() + wedge).max(1e-12);
         }
     }
@@ -139,7 +139,7 @@ pub(crate) fn iterate(
     let g = level.grid;
     let mut scale = row_scales(level);
     let mut ev = evaluate(level, model, *h0, &scale);
-    let mut eta = MAX_FIRST_FORCING;
+    let mut eta = FIRST_FORCING;
     let mut norm_before = f64::NAN;
     let mut outcome = Outcome {
         converged: false,
@@ -232,7 +232,7 @@ pub(crate) fn iterate(
 }
 
 /// The forcing term of the first step: its linear system solved to a tenth.
-const MAX_FIRST_FORCING: f64 = 0.1;
+const FIRST_FORCING: f64 = 0.1;
 
 #[cfg(test)]
 mod tests {
