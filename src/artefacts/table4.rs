@@ -3,8 +3,9 @@
 
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
+use crate::solver::output::Progress;
 use crate::solver::output::SolveError;
-use crate::solver::point::{solve, Params, Progress};
+use crate::solver::point::{solve, Params};
 use serde::Deserialize;
 
 /// The case definition shipped in `cases/table4.toml`.

@@ -6,7 +6,7 @@
 
 use super::args::PredictArgs;
 use super::config::{check_level, flag_error, lubricant_spec, physics};
-use super::print::{point_progress, print_failure, rolling_text};
+use super::print::{print_failure, rolling_text, solve_progress};
 use super::solve::point_report;
 use anyhow::{bail, Result};
 use repro::artefacts::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
@@ -96,7 +96,7 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
         };
         let problem = Problem::from_case(&case, &lubs).map_err(flag_error)?;
         let params = Params::at_level(level);
-        let mut printer = point_progress(args.quiet || args.json);
+        let mut printer = solve_progress(args.quiet || args.json);
         match solve_point(&problem, &params, Some(&mut printer)) {
             Ok(s) => Some((problem, s)),
             Err(e) => {

@@ -4,8 +4,7 @@
 use repro::artefacts::fit::{mastercurve, PAPER_C};
 use repro::artefacts::target::Built;
 use repro::physics::case::Physics;
-use repro::solver::output::{Film, Friction, Info, SolveError};
-use repro::solver::{line, point};
+use repro::solver::output::{Film, Friction, Info, Progress, SolveError, Step};
 use serde_json::{json, Map, Value};
 
 /// What every solve reports, point or line contact: the keys of `repro solve --json`.
@@ -73,32 +72,24 @@ pub fn print_failure(e: &SolveError) {
     eprintln!("residual history: {:?}", e.residual_history());
 }
 
-/// Prints one progress line per point-solver cycle to stderr (nothing when `quiet`).
-pub fn point_progress(quiet: bool) -> impl FnMut(&point::Progress) {
-    move |p: &point::Progress| {
-        if !quiet {
-            let krylov = if p.newton {
-                format!(", {} GMRES iterations", p.krylov_iterations)
-            } else {
-                String::new()
-            };
-            eprintln!(
-                "  level {:>2} {} {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}{krylov}",
-                p.level, if p.newton { "newton" } else { "cycle " }, p.cycle, p.residual, p.worst_at.0, p.worst_at.1, p.pressure_change, p.load_error, p.h_central
-            );
+/// Prints one progress line per solver step (point-contact cycle or Newton-Krylov step,
+/// line-contact Newton iteration) to stderr; nothing when `quiet`.
+pub fn solve_progress(quiet: bool) -> impl FnMut(&Progress) {
+    move |p: &Progress| {
+        if quiet {
+            return;
         }
-    }
-}
-
-/// Prints one progress line per line-solver iteration to stderr (nothing when `quiet`).
-pub fn line_progress(quiet: bool) -> impl FnMut(&line::Progress) {
-    move |p: &line::Progress| {
-        if !quiet {
-            eprintln!(
-                "level {:>2} iteration {:>3}: residual {:.3e}, load error {:.2e}, H(0) {:.5e}",
-                p.level, p.cycle, p.residual, p.load_error, p.h_central
-            );
-        }
+        let (what, krylov) = match p.step {
+            Step::Cycle => ("cycle ", String::new()),
+            Step::NewtonKrylov { krylov_iterations } => {
+                ("newton", format!(", {krylov_iterations} GMRES iterations"))
+            }
+            Step::Newton => ("newton", String::new()),
+        };
+        eprintln!(
+            "  level {:>2} {what} {:>3}: residual {:.3e} (largest at X {:+.3}, Y {:+.3}), dP {:.1e}, load error {:.1e}, Hc {:.5e}{krylov}",
+            p.level, p.count, p.residual, p.worst_at.0, p.worst_at.1, p.pressure_change, p.load_error, p.h_central
+        );
     }
 }
 

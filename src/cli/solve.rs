@@ -3,7 +3,7 @@
 
 use super::args::SolveArgs;
 use super::config::flag_error;
-use super::print::{line_progress, point_progress, print_failure, rolling_text, SolveReport};
+use super::print::{print_failure, rolling_text, solve_progress, SolveReport};
 use anyhow::{Context as _, Result};
 use repro::artefacts::csv::{num, table, write_atomic};
 use repro::physics::case::Problem;
@@ -22,7 +22,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     let case = args.case()?;
     let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
     let params = args.params(problem.groups.m)?;
-    let mut printer = point_progress(args.quiet);
+    let mut printer = solve_progress(args.quiet);
     let s = match point::solve(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,
         Err(e) => {
@@ -130,7 +130,7 @@ fn point_text(problem: &Problem, s: &PointSolution) -> String {
 fn run_line(args: &SolveArgs) -> Result<bool> {
     let problem = args.line_problem()?;
     let params = args.line_params()?;
-    let mut printer = line_progress(args.quiet);
+    let mut printer = solve_progress(args.quiet);
     let s = match line::solve(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,
         Err(e) => {

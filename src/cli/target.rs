@@ -3,7 +3,7 @@
 
 use super::args::{RunArgs, Table4Args, TargetArgs};
 use super::config::check_level;
-use super::print::{point_progress, summary_line};
+use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
 use anyhow::{anyhow, Context as _, Result};
 use repro::artefacts::csv::write_atomic;
@@ -75,7 +75,7 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
             .collect::<Result<Vec<_>>>()?,
         None => spec.levels.clone(),
     };
-    let mut printer = point_progress(args.quiet);
+    let mut printer = solve_progress(args.quiet);
     let rows = table4::compute(&spec, &levels, |p| printer(p)).map_err(anyhow::Error::msg)?;
     let path = args.out.join("table4.csv");
     write_atomic(&path, &table4::to_csv(&rows))

@@ -174,6 +174,28 @@ pub(super) fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
     }
 }
 
+/// Range of the maximum Hertzian pressure (Pa) a case may have: 1 MPa (soft, barely
+/// piezoviscous contacts) to 20 GPa (beyond every steel contact). Its purpose is to catch a
+/// unit slip, e.g. `--ph 3` meant as GPa, which otherwise gives a problem no solver converges.
+const PH_RANGE_PA: std::ops::RangeInclusive<f64> = 1e6..=2e10;
+
+/// A maximum Hertzian pressure in Pa, inside [`PH_RANGE_PA`].
+pub(super) fn hertzian_pressure(name: &'static str, v: f64) -> Result<f64, CaseError> {
+    let v = positive(name, v)?;
+    if PH_RANGE_PA.contains(&v) {
+        Ok(v)
+    } else {
+        Err(field(
+            name,
+            format!(
+                "p_H = {v} Pa is outside {:e}..={:e} Pa; it is in Pa (3 GPa is 3e9)",
+                PH_RANGE_PA.start(),
+                PH_RANGE_PA.end()
+            ),
+        ))
+    }
+}
+
 pub(super) fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError> {
     if (0.0..=2.0).contains(&s) {
         Ok(s)
@@ -196,7 +218,7 @@ pub(super) fn physical_scales(
     let needs_ph = physics.viscosity == ViscosityLaw::Roelands
         || physics.density == DensityLaw::DowsonHigginson;
     let ph_pa = match ph_pa {
-        Some(v) => positive("ph", v)?,
+        Some(v) => hertzian_pressure("ph", v)?,
         None if needs_ph => return Err(field(
             "ph",
             "Roelands and Dowson-Higginson need the physical p_H (Pa) in the dimensionless form",
@@ -309,7 +331,7 @@ impl Problem {
     ) -> Result<Self, CaseError> {
         let state = p.lubricant.resolve(lubs)?;
         let (alpha, eta0) = (state.alpha_per_pa, state.eta0_pa_s);
-        let ph = positive("ph", p.ph_pa)?;
+        let ph = hertzian_pressure("ph", p.ph_pa)?;
         let um = positive("um", p.um_m_s)?;
         let slip = slip_in_range("slip", p.slip)?;
         let tau0 = positive("tau0", p.tau0_pa)?;
@@ -436,6 +458,21 @@ pub(crate) mod tests {
         assert!(
             (p.groups.moes_film_scale / (1.5 * p.groups.m).powf(2.0 / 3.0) - 1.0).abs() < 1e-12
         );
+    }
+
+    #[test]
+    fn a_pressure_given_in_gpa_instead_of_pa_is_refused_by_name() {
+        let mut case = worked_case();
+        if let Spec::Physical(p) = &mut case.spec {
+            p.ph_pa = 3.0;
+        }
+        let e = Problem::from_case(&case, &LubricantTable::table1()).unwrap_err();
+        let text = e.to_string();
+        assert!(text.contains("ph") && text.contains("3e9"), "{text}");
+        // The ends of the range are accepted.
+        for ph in [1e6, 2e10] {
+            assert_eq!(hertzian_pressure("ph", ph).unwrap(), ph);
+        }
     }
 
     #[test]

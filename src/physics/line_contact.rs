@@ -11,8 +11,8 @@
 //! `H = H0 + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
 
 use super::case::{
-    eyring_n_s, field, physical_scales, positive, slip_in_range, CaseError, LubricantSpec,
-    PhysicalCase, Physics,
+    eyring_n_s, field, hertzian_pressure, physical_scales, positive, slip_in_range, CaseError,
+    LubricantSpec, PhysicalCase, Physics,
 };
 use super::density::Density;
 use super::lubricant::LubricantTable;
@@ -379,7 +379,7 @@ impl LineProblem {
     pub fn from_physical(c: &LinePhysicalCase, physics: Physics) -> Result<Self, CaseError> {
         let alpha = positive("alpha", c.alpha_per_pa)?;
         let eta0 = positive("eta0", c.eta0_pa_s)?;
-        let ph = positive("ph", c.ph_pa)?;
+        let ph = hertzian_pressure("ph", c.ph_pa)?;
         let um = positive("um", c.um_m_s)?;
         let slip = slip_in_range("slip", c.slip)?;
         let tau0 = positive("tau0", c.tau0_pa)?;
@@ -476,11 +476,12 @@ impl LineProblem {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
+    /// Mineral oil A at 40 C (Table 1), the fifth case of Table 3 (3 GPa, 7 m/s, S = 0.1 %,
+    /// 8 MPa) as a line contact: the heavy case of the line-contact tests.
     pub(crate) fn heavy_case() -> LinePhysicalCase {
-        // Mineral oil A at 40 C (Table 1), the fifth case of Table 3.
         LinePhysicalCase {
             alpha_per_pa: 21.6e-9,
             eta0_pa_s: 8.24e-3,

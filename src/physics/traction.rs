@@ -418,6 +418,7 @@ pub fn reduce(
 mod tests {
     use super::*;
     use crate::physics::case::tests::{worked_case, worked_physical};
+    use crate::physics::line_contact::tests::heavy_case;
     use crate::physics::viscosity::Viscosity;
 
     /// The Appendix case (`cases/table4.toml`) as an operating point, Eq. (10) film.
@@ -509,20 +510,7 @@ mod tests {
             ..worked_point()
         };
         let c = characteristic(&p, &lubs).unwrap();
-        let lp = LineProblem::from_physical(
-            &LinePhysicalCase {
-                alpha_per_pa: 21.6e-9,
-                eta0_pa_s: 8.24e-3,
-                ph_pa: 3e9,
-                um_m_s: 7.0,
-                slip: 0.001,
-                tau0_pa: 8e6,
-                rx_m: 1.03875e-2,
-                e_prime_pa: 226e9,
-            },
-            Physics::figs_4_to_7(),
-        )
-        .unwrap();
+        let lp = LineProblem::from_physical(&heavy_case(), Physics::figs_4_to_7()).unwrap();
         let expect = lp.tau_c_with(LineFilmFormula::DowsonHigginson);
         assert!(
             (c.tau_c / expect - 1.0).abs() < 1e-13,

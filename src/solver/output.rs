@@ -17,6 +17,20 @@ pub struct Film {
     pub hmin_moes: f64,
 }
 
+impl Film {
+    /// The film of a converged solution from its central value and its film field, in the
+    /// solver's unit and (times `moes_scale`) in Moes units.
+    pub(crate) fn of(h_central: f64, h: &[f64], moes_scale: f64) -> Film {
+        let h_min = h.iter().cloned().fold(f64::INFINITY, f64::min);
+        Film {
+            h_central,
+            h_min,
+            hc_moes: h_central * moes_scale,
+            hmin_moes: h_min * moes_scale,
+        }
+    }
+}
+
 /// Reduced friction `mu-bar = mu p_H / tau0`, Eq. (8), split into its parts.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Friction {
@@ -55,6 +69,52 @@ impl Method {
             Method::Newton => "newton",
         }
     }
+}
+
+/// What one step of a solver was.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Step {
+    /// A multigrid cycle of the point contact.
+    Cycle,
+    /// A Newton step of the point contact's Newton-Krylov finish, with the GMRES iterations
+    /// it took.
+    NewtonKrylov {
+        /// GMRES iterations of the step.
+        krylov_iterations: usize,
+    },
+    /// A damped Newton iteration of the line contact (dense Jacobian).
+    Newton,
+}
+
+/// What a solver's observer is told after each step (cycle or Newton iteration), the same
+/// for the point and the line contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Progress {
+    /// Level the step ran on.
+    pub level: u32,
+    /// Step number on that level and of that kind (from 1).
+    pub count: usize,
+    /// What the step was.
+    pub step: Step,
+    /// Mean absolute residual after the step.
+    pub residual: f64,
+    /// Relative force-balance error after the step.
+    pub load_error: f64,
+    /// Mean absolute change of `P` over the step.
+    pub pressure_change: f64,
+    /// Central film `H` after the step.
+    pub h_central: f64,
+    /// `(X, Y)` of the largest residual (`Y = 0` for the line contact).
+    pub worst_at: (f64, f64),
+}
+
+/// Mean absolute difference of two pressure fields.
+pub(crate) fn mean_change(p: &[f64], before: &[f64]) -> f64 {
+    p.iter()
+        .zip(before)
+        .map(|(a, b)| (a - b).abs())
+        .sum::<f64>()
+        / p.len() as f64
 }
 
 /// How the solve went.

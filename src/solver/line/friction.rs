@@ -6,14 +6,7 @@ use crate::solver::output::{Film, Friction};
 /// Central film (at `X = 0`, a node of every level) and minimum film, in `H = h Rx / a^2` and
 /// in Moes units.
 pub(crate) fn film(level: &Level, moes_scale: f64) -> Film {
-    let h_central = level.h[level.nearest(0.0)];
-    let h_min = level.h.iter().cloned().fold(f64::INFINITY, f64::min);
-    Film {
-        h_central,
-        h_min,
-        hc_moes: h_central * moes_scale,
-        hmin_moes: h_min * moes_scale,
-    }
+    Film::of(level.h[level.nearest(0.0)], &level.h, moes_scale)
 }
 
 /// Eq. (8) in one dimension: `mu-bar = int tau_x dX / int P dX` over the pressurised region

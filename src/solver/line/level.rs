@@ -216,6 +216,15 @@ impl Level {
         sum / (self.n - 1) as f64
     }
 
+    /// The pressurised interior node of the largest absolute residual (the first node when
+    /// none is pressurised).
+    pub fn worst_residual_node(&self) -> usize {
+        (1..self.n)
+            .filter(|&i| self.p[i] > 0.0)
+            .max_by(|&a, &b| self.residual(a).abs().total_cmp(&self.residual(b).abs()))
+            .unwrap_or(0)
+    }
+
     /// `int P dX` by the rectangle rule (the end values are zero).
     pub fn load(&self) -> f64 {
         self.p.iter().sum::<f64>() * self.dx

@@ -36,7 +36,9 @@ mod newton;
 mod transfer;
 
 use crate::physics::line_contact::{LineFilmFormula, LineHertz, LineProblem};
-use crate::solver::output::{Film, Friction, Info, Method, SolveError};
+use crate::solver::output::{
+    mean_change, Film, Friction, Info, Method, Progress, SolveError, Step,
+};
 use level::{Level, Model, LOAD};
 use std::time::Instant;
 
@@ -119,21 +121,6 @@ impl Params {
     }
 }
 
-/// What the observer is told after each Newton iteration.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Progress {
-    /// Level the cycle ran on.
-    pub level: u32,
-    /// Iteration number on that level (from 1).
-    pub cycle: usize,
-    /// Mean absolute residual after the iteration.
-    pub residual: f64,
-    /// Relative force-balance error after the iteration.
-    pub load_error: f64,
-    /// Central film `H` after the iteration.
-    pub h_central: f64,
-}
-
 /// A converged line-contact solution.
 #[derive(Debug, Clone)]
 pub struct LineSolution {
@@ -206,17 +193,22 @@ pub fn solve(
         let mut level_history = Vec::new();
         let mut non_finite = false;
         let mut diverged = false;
+        let mut before = level.p.clone();
         let mut report = |l: &Level, residual: f64, load_error: f64, _h0: f64| -> bool {
             level_history.push(residual);
             if let Some(obs) = observer.as_mut() {
                 obs(&Progress {
                     level: lv,
-                    cycle: level_history.len(),
+                    count: level_history.len(),
+                    step: Step::Newton,
                     residual,
                     load_error,
+                    pressure_change: mean_change(&l.p, &before),
                     h_central: friction::film(l, 1.0).h_central,
+                    worst_at: (l.x(l.worst_residual_node()), 0.0),
                 });
             }
+            before.copy_from_slice(&l.p);
             if !residual.is_finite() || l.p.iter().any(|v| !v.is_finite()) {
                 non_finite = true;
                 return false;

@@ -3,22 +3,13 @@
 
 use super::*;
 use crate::physics::case::Physics;
+use crate::physics::line_contact::tests::heavy_case;
 use crate::physics::line_contact::{LineDimensionlessCase, LineEyringFlow};
 use crate::physics::rheology::Rheology;
 
 /// Mineral oil A at 40 C (Table 1), the last row of Table 3: 3 GPa, 7 m/s, S = 0.1 %, 8 MPa.
 fn heavy() -> LineProblem {
-    let c = crate::physics::line_contact::LinePhysicalCase {
-        alpha_per_pa: 21.6e-9,
-        eta0_pa_s: 8.24e-3,
-        ph_pa: 3e9,
-        um_m_s: 7.0,
-        slip: 0.001,
-        tau0_pa: 8e6,
-        rx_m: 1.03875e-2,
-        e_prime_pa: 226e9,
-    };
-    LineProblem::from_physical(&c, Physics::figs_4_to_7()).unwrap()
+    LineProblem::from_physical(&heavy_case(), Physics::figs_4_to_7()).unwrap()
 }
 
 fn newtonian(m: f64, l: f64) -> LineProblem {

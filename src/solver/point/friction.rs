@@ -6,14 +6,7 @@ use crate::solver::output::{Film, Friction};
 
 /// Central film (at `X = Y = 0`) and minimum film, in `H = h/c` and in Moes units.
 pub(crate) fn film(level: &Level, moes_scale: f64) -> Film {
-    let h_central = level.h_central();
-    let h_min = level.h.iter().cloned().fold(f64::INFINITY, f64::min);
-    Film {
-        h_central,
-        h_min,
-        hc_moes: h_central * moes_scale,
-        hmin_moes: h_min * moes_scale,
-    }
+    Film::of(level.h_central(), &level.h, moes_scale)
 }
 
 /// Eq. (8): `mu-bar = int tau_x dA / int P dA` over the pressurised region.

@@ -23,7 +23,9 @@ mod transfer;
 use crate::physics::case::Problem;
 use crate::physics::film::hc_eq10;
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::{Film, Friction, Info, Method, SolveError};
+use crate::solver::output::{
+    mean_change, Film, Friction, Info, Method, Progress, SolveError, Step,
+};
 use level::{Model, LOAD};
 use multigrid::Hierarchy;
 use std::time::Instant;
@@ -152,30 +154,6 @@ impl Params {
     }
 }
 
-/// What the observer is told after each cycle.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Progress {
-    /// Level the cycle ran on.
-    pub level: u32,
-    /// Cycle number on that level (from 1).
-    pub cycle: usize,
-    /// Mean absolute residual after the cycle.
-    pub residual: f64,
-    /// Relative force-balance error after the cycle.
-    pub load_error: f64,
-    /// Mean absolute change of `P` over the cycle.
-    pub pressure_change: f64,
-    /// Central film `H` after the cycle.
-    pub h_central: f64,
-    /// `(X, Y)` of the largest residual.
-    pub worst_at: (f64, f64),
-    /// Whether this was a step of the Newton-Krylov finish (its `cycle` counts the steps
-    /// on its level).
-    pub newton: bool,
-    /// GMRES iterations of the Newton step (0 for a cycle).
-    pub krylov_iterations: usize,
-}
-
 /// A converged point-contact solution.
 #[derive(Debug, Clone)]
 pub struct PointSolution {
@@ -205,15 +183,6 @@ fn stalled(history: &[f64], window: usize) -> bool {
     let (before, recent) = history.split_at(history.len() - window);
     let best = |v: &[f64]| v.iter().cloned().fold(f64::INFINITY, f64::min);
     best(recent) > 0.5 * best(before)
-}
-
-/// Mean absolute difference of two pressure fields.
-fn mean_change(p: &[f64], before: &[f64]) -> f64 {
-    p.iter()
-        .zip(before)
-        .map(|(a, b)| (a - b).abs())
-        .sum::<f64>()
-        / p.len() as f64
 }
 
 /// A level's pressure and the film constant `Delta`: a start of the finish.
@@ -255,14 +224,13 @@ fn cycle_progress(mg: &mut Hierarchy, k: usize, cycle: usize, before: &[f64]) ->
     let level = &mg.levels[k];
     Progress {
         level: level_number(level),
-        cycle,
+        count: cycle,
+        step: Step::Cycle,
         residual,
         load_error: (level.load_defect() / LOAD).abs(),
         pressure_change: mean_change(&level.p, before),
         h_central: level.h_central(),
         worst_at,
-        newton: false,
-        krylov_iterations: 0,
     }
 }
 
@@ -367,14 +335,15 @@ fn finish(
             history.push(step.residual);
             observe(&Progress {
                 level: level_number(level),
-                cycle: steps,
+                count: steps,
+                step: Step::NewtonKrylov {
+                    krylov_iterations: step.krylov_iterations,
+                },
                 residual: step.residual,
                 load_error: step.load_error,
                 pressure_change: mean_change(&level.p, &before),
                 h_central: level.h_central(),
                 worst_at: step.worst_at,
-                newton: true,
-                krylov_iterations: step.krylov_iterations,
             });
             before.copy_from_slice(&level.p);
         },
