@@ -5,6 +5,7 @@ use super::cache::{key_of, Cache, Lookup};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::solver::grid::Domain;
+use crate::solver::output::SolveError;
 use crate::solver::point::{solve, Params, PointSolution, SOLVER_REVISION};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -40,7 +41,8 @@ pub struct Record {
 }
 
 impl Record {
-    fn of(s: &PointSolution) -> Self {
+    /// The record of a converged solution.
+    pub fn of(s: &PointSolution) -> Self {
         Record {
             h_central: s.film.h_central,
             h_min: s.film.h_min,
@@ -77,6 +79,27 @@ pub enum Outcome {
     },
 }
 
+impl Outcome {
+    /// The outcome of a solve.
+    pub fn of(solved: &Result<PointSolution, SolveError>) -> Self {
+        match solved {
+            Ok(s) => Outcome::Solved(Record::of(s)),
+            Err(e) => Outcome::Failed {
+                error: e.to_string(),
+                residual_history: e.residual_history().to_vec(),
+            },
+        }
+    }
+
+    /// The record, if the case solved.
+    pub fn record(&self) -> Option<&Record> {
+        match self {
+            Outcome::Solved(r) => Some(r),
+            Outcome::Failed { .. } => None,
+        }
+    }
+}
+
 /// A short, stable name (no numbers) of a solver error given as its text, the same on every
 /// machine: for tables and snapshots of point and line contacts alike.
 pub fn failure_kind(error: &str) -> &'static str {
@@ -105,7 +128,6 @@ pub struct CaseRun {
 }
 
 impl CaseRun {
-    /// The record when solved.
     /// A short, stable name of the failure (no numbers, so that it is the same on every
     /// machine), or `None` when solved.
     pub fn failure_kind(&self) -> Option<&'static str> {
@@ -115,11 +137,9 @@ impl CaseRun {
         Some(failure_kind(error))
     }
 
+    /// The record when solved.
     pub fn record(&self) -> Option<&Record> {
-        match &self.outcome {
-            Outcome::Solved(r) => Some(r),
-            Outcome::Failed { .. } => None,
-        }
+        self.outcome.record()
     }
 }
 
@@ -191,13 +211,7 @@ pub fn run_cases(
                     if let Some(Lookup::Corrupt(why)) = other {
                         warn(format!("corrupt cache entry recomputed: {why}"));
                     }
-                    let outcome = match solve(&problem, params, None) {
-                        Ok(s) => Outcome::Solved(Record::of(&s)),
-                        Err(e) => Outcome::Failed {
-                            error: e.to_string(),
-                            residual_history: e.residual_history().to_vec(),
-                        },
-                    };
+                    let outcome = Outcome::of(&solve(&problem, params, None));
                     if let Some(c) = cache {
                         if let Err(e) = c.put(&key, &outcome) {
                             warn(format!(

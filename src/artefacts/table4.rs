@@ -1,12 +1,13 @@
 //! Table 4: variation of the central film `H = h/c` and of the sliding reduced friction with
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
+use super::cache::{key_of, Cache, Lookup};
+use super::run::{case_key, Outcome, Record};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::solver::output::Progress;
-use crate::solver::output::SolveError;
 use crate::solver::point::{solve, Params};
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
 /// The case definition shipped in `cases/table4.toml`.
 pub const CASE_TOML: &str = include_str!("../../cases/table4.toml");
@@ -52,11 +53,14 @@ pub struct Row {
     /// Grid level.
     pub level: u32,
     /// The solve, or why it failed.
-    pub outcome: Result<crate::solver::point::PointSolution, SolveError>,
-    /// Wall time of the solve, s.
+    pub outcome: Outcome,
+    /// Wall time of the solve, s, measured when it was computed (also when it comes from
+    /// the cache).
     pub seconds: f64,
     /// The case's characteristic shear stress, Eq. (12) (the same at every level).
     pub tau_c: f64,
+    /// Whether the level came from the cache.
+    pub cached: bool,
 }
 
 impl Row {
@@ -64,6 +68,18 @@ impl Row {
     pub fn paper(&self) -> Option<(f64, f64)> {
         paper_at(self.level)
     }
+
+    /// The solved level's record, if it solved.
+    pub fn solved(&self) -> Option<&Record> {
+        self.outcome.record()
+    }
+}
+
+/// A level's outcome and its wall time: what the cache keeps of a Table 4 level.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+struct Level {
+    outcome: Outcome,
+    seconds: f64,
 }
 
 /// Solver parameters for a Table 4 level: the defaults, except that at level 5 a
@@ -77,22 +93,55 @@ pub fn params(level: u32) -> Params {
     }
 }
 
-/// Solves the case at each level; `observer` hears of every cycle.
+/// The cache key of a Table 4 level: the case's key at the level's parameters, marked as
+/// Table 4's (whose level 5 accepts a closed film, unlike a sweep's).
+fn level_key(case: &Case, level: u32) -> String {
+    let params = params(level);
+    key_of(&(
+        "table4",
+        case_key(case, &params),
+        params.require_positive_film,
+    ))
+}
+
+/// Solves the case at each level, or takes the level from `cache` (and fills it);
+/// `observer` hears of every cycle of a solve, `warn` of a corrupt cache entry or one that
+/// cannot be written.
 pub fn compute(
     spec: &Table4Case,
     levels: &[u32],
+    cache: Option<&Cache>,
     mut observer: impl FnMut(&Progress),
+    warn: &dyn Fn(String),
 ) -> Result<Vec<Row>, String> {
     let problem = spec.problem()?;
     let mut rows = Vec::new();
     for &level in levels {
-        let t = std::time::Instant::now();
-        let outcome = solve(&problem, &params(level), Some(&mut observer));
+        let key = level_key(&spec.case, level);
+        let (found, cached) = match cache.map(|c| c.get::<Level>(&key)) {
+            Some(Lookup::Hit(found)) => (found, true),
+            other => {
+                if let Some(Lookup::Corrupt(why)) = other {
+                    warn(format!("corrupt cache entry recomputed: {why}"));
+                }
+                let t = std::time::Instant::now();
+                let solved = solve(&problem, &params(level), Some(&mut observer));
+                let found = Level {
+                    outcome: Outcome::of(&solved),
+                    seconds: t.elapsed().as_secs_f64(),
+                };
+                if let Some(Err(e)) = cache.map(|c| c.put(&key, &found)) {
+                    warn(format!("cannot write the Table 4 cache entry: {e}"));
+                }
+                (found, false)
+            }
+        };
         rows.push(Row {
             level,
-            outcome,
-            seconds: t.elapsed().as_secs_f64(),
+            outcome: found.outcome,
+            seconds: found.seconds,
             tau_c: problem.tau_c(),
+            cached,
         });
     }
     Ok(rows)
@@ -126,27 +175,29 @@ pub fn to_csv(rows: &[Row]) -> String {
             let n = 1u32 << (r.level + 1);
             let paper = r.paper();
             let (hc, hcm, hmin, mu, cycles, res, status) = match &r.outcome {
-                Ok(s) => (
-                    num(s.film.h_central),
-                    num(s.film.hc_moes),
-                    num(s.film.h_min),
-                    num(s.friction.sliding),
-                    s.info.cycles.to_string(),
-                    num(s.info.residual()),
-                    if s.film.h_min > 0.0 {
+                Outcome::Solved(s) => (
+                    num(s.h_central),
+                    num(s.hc_moes),
+                    num(s.h_min),
+                    num(s.mu_bar_sliding),
+                    s.cycles.to_string(),
+                    num(s.residual),
+                    if s.h_min > 0.0 {
                         "ok"
                     } else {
                         "ok-film-nonpositive"
                     }
                     .to_string(),
                 ),
-                Err(e) => (
+                Outcome::Failed {
+                    residual_history, ..
+                } => (
                     String::new(),
                     String::new(),
                     String::new(),
                     String::new(),
-                    e.residual_history().len().to_string(),
-                    opt(e.residual_history().last().copied()),
+                    residual_history.len().to_string(),
+                    opt(residual_history.last().copied()),
                     "failed".into(),
                 ),
             };
@@ -161,11 +212,7 @@ pub fn to_csv(rows: &[Row]) -> String {
                 opt(paper.map(|p| p.1)),
                 num(r.tau_c),
                 num(mastercurve(r.tau_c, PAPER_C)),
-                opt(r
-                    .outcome
-                    .as_ref()
-                    .ok()
-                    .map(|s| implied_c(r.tau_c, s.friction.sliding))),
+                opt(r.solved().map(|s| implied_c(r.tau_c, s.mu_bar_sliding))),
                 opt(paper.map(|p| implied_c(r.tau_c, p.1))),
                 cycles,
                 res,
@@ -193,8 +240,8 @@ pub fn to_text(rows: &[Row]) -> String {
             .map(|p| format!("{:.2}", p.1))
             .unwrap_or_else(|| "-".into());
         match &r.outcome {
-            Ok(s) => {
-                let flag = if s.film.h_min > 0.0 {
+            Outcome::Solved(s) => {
+                let flag = if s.h_min > 0.0 {
                     ""
                 } else {
                     "  (min film <= 0: grid too coarse)"
@@ -203,17 +250,17 @@ pub fn to_text(rows: &[Row]) -> String {
                     "{:>5}  {:>9}  {:>11.4e}  {:>10}  {:>13.3}  {:>14}  {:>6}  {:>8.2}{}\n",
                     r.level,
                     format!("{n}x{n}"),
-                    s.film.h_central,
+                    s.h_central,
                     ph,
-                    s.friction.sliding,
+                    s.mu_bar_sliding,
                     pm,
-                    s.info.cycles,
+                    s.cycles,
                     r.seconds,
                     flag
                 ));
             }
-            Err(e) => out.push_str(&format!(
-                "{:>5}  {:>9}  failed: {e}\n",
+            Outcome::Failed { error, .. } => out.push_str(&format!(
+                "{:>5}  {:>9}  failed: {error}\n",
                 r.level,
                 format!("{n}x{n}")
             )),
@@ -230,7 +277,7 @@ pub fn mastercurve_note(rows: &[Row]) -> String {
     let Some((r, ours)) = rows
         .iter()
         .rev()
-        .find_map(|r| Some((r, r.outcome.as_ref().ok()?.friction.sliding)))
+        .find_map(|r| Some((r, r.solved()?.mu_bar_sliding)))
     else {
         return String::new();
     };

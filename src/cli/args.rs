@@ -133,12 +133,16 @@ pub enum RheologyArg {
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum DomainArg {
-    /// The paper's domain from M = 300 up, the wide one below (as every target does).
+    /// The wide domain below M = 300, the paper's up to M = 4000, the heavy-load one
+    /// above (as every target does).
     Auto,
     /// -2.5 <= X <= 1.5, -2 <= Y <= 2: the paper's (reproduces Table 4).
     Paper,
     /// -4.5 <= X <= 1.5, -3 <= Y <= 3: a longer inlet for lightly loaded contacts (M < 100).
     Wide,
+    /// -1.75 <= X <= 1.25, -1.5 <= Y <= 1.5: a finer mesh where heavily loaded contacts
+    /// (M >= 4000) need it.
+    Heavy,
 }
 
 #[derive(Debug, Args)]

@@ -143,6 +143,7 @@ impl SolveArgs {
                 DomainArg::Auto => Domain::for_load(m),
                 DomainArg::Paper => Domain::default(),
                 DomainArg::Wide => Domain::wide(),
+                DomainArg::Heavy => Domain::heavy(),
             },
             max_cycles: self.max_cycles,
             newton_steps: self.newton_steps,

@@ -222,10 +222,11 @@ impl Level {
         (sum / ((g.nx - 1) * (g.ny - 1)) as f64, at)
     }
 
-    /// Film `H` at the node nearest the contact centre `X = Y = 0`.
+    /// Film `H` at the contact centre `X = Y = 0`: the node there on the paper's and the
+    /// wide domain; on a domain where `X = 0` falls between two nodes (the heavy-load one),
+    /// linear in `X` between them (`Y = 0` is a node of every symmetric grid).
     pub fn h_central(&self) -> f64 {
-        let (i, j) = self.grid.nearest(0.0, 0.0);
-        self.h[self.grid.idx(i, j)]
+        self.grid.at_centre(&self.h)
     }
 
     /// Force-balance defect `sum P hx hy + rg`.
