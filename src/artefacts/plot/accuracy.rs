@@ -5,24 +5,29 @@ use super::{render_svg, Figure, Marker, Scale, Series, MU_BAR};
 use crate::artefacts::accuracy::CaseStudy;
 
 /// `figures/accuracy.svg`: the `mu-bar` error of each level against its wall time, log-log,
-/// one series per case. A level whose error is zero (the finest, when it is its own reference)
+/// one line per case through its levels, each marker labelled with its level. A level whose error is zero (the finest, when it is its own reference)
 /// cannot be drawn on a log axis and is counted in the figure's note by the plot module.
 pub fn svg(studies: &[CaseStudy]) -> Result<String, String> {
     let series = studies
         .iter()
         .enumerate()
-        .map(|(i, s)| Series {
-            label: format!("{} ({} contact)", s.name, s.kind),
-            points: s
+        .map(|(i, s)| {
+            let (points, point_labels) = s
                 .levels
                 .iter()
-                .filter_map(|r| s.errors(r).map(|e| (r.seconds, e.1)))
-                .collect(),
-            marker: Marker::nth(i),
+                .filter_map(|r| Some(((r.seconds, s.errors(r)?.1), format!("L{}", r.level))))
+                .unzip();
+            Series {
+                label: format!("{} ({} contact)", s.name, s.kind),
+                points,
+                marker: Marker::nth(i),
+                joined: true,
+                point_labels,
+            }
         })
         .collect();
     let fig = Figure {
-        title: "What accuracy costs: one marker per level, finer to the right".into(),
+        title: "What accuracy costs: each case through its levels (L5 = level 5)".into(),
         x_label: "wall time of one solve (s)".into(),
         y_label: format!("error of sliding {MU_BAR} vs Richardson extrapolation"),
         x_scale: Scale::Log,
@@ -49,7 +54,15 @@ mod tests {
         let svg = svg(&[study(levels)]).unwrap();
         assert!(svg.starts_with("<svg"));
         // Levels 5 and 6 are drawn against their Richardson extrapolation, with the legend's
-        // sample; the failed level 4 has no error to draw.
+        // sample, joined by one line and labelled; the failed level 4 has no error to draw.
         assert_eq!(svg.matches("<circle").count(), 2 + 1);
+        let labelled = |l: &str| svg.lines().any(|line| line.trim() == l);
+        assert!(labelled("L5") && labelled("L6") && !labelled("L4"));
+        // The joining line, in the first series' colour (the axes' lines are black).
+        assert_eq!(
+            svg.matches(r##"<polyline fill="none" opacity="1" stroke="#0072B2""##)
+                .count(),
+            1
+        );
     }
 }

@@ -22,9 +22,10 @@ pub fn render_svg(fig: &Figure) -> Result<String, PlotError> {
     render(fig).map(|r| r.svg)
 }
 
-/// Series in plotted coordinates, and what was left out.
+/// Series in plotted coordinates (with each point's label), and what was left out.
 pub(super) struct Prepared {
     series: Vec<Vec<(f64, f64)>>,
+    labels: Vec<Vec<String>>,
     curves: Vec<Vec<Option<(f64, f64)>>>,
     skipped_points: usize,
     skipped_curve_points: usize,
@@ -34,15 +35,22 @@ pub(super) fn prepare(fig: &Figure) -> Prepared {
     let mut skipped_points = 0;
     let mut skipped_curve_points = 0;
     let map = |&(x, y): &(f64, f64)| Some((to_plot(fig.x_scale, x)?, to_plot(fig.y_scale, y)?));
-    let series = fig
+    let (series, labels) = fig
         .series
         .iter()
         .map(|s| {
-            let pts: Vec<_> = s.points.iter().filter_map(map).collect();
-            skipped_points += s.points.len() - pts.len();
-            pts
+            let kept: Vec<((f64, f64), String)> = s
+                .points
+                .iter()
+                .enumerate()
+                .filter_map(|(k, p)| {
+                    Some((map(p)?, s.point_labels.get(k).cloned().unwrap_or_default()))
+                })
+                .collect();
+            skipped_points += s.points.len() - kept.len();
+            kept.into_iter().unzip()
         })
-        .collect();
+        .unzip();
     let curves = fig
         .curves
         .iter()
@@ -54,6 +62,7 @@ pub(super) fn prepare(fig: &Figure) -> Prepared {
         .collect();
     Prepared {
         series,
+        labels,
         curves,
         skipped_points,
         skipped_curve_points,
@@ -80,16 +89,18 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
     let x_axis = plan_axis("x", fig.x_scale, fig.x_range, &xs)?;
     let y_axis = plan_axis("y", fig.y_scale, fig.y_range, &ys)?;
 
-    let visible: Vec<Vec<(f64, f64)>> = prepared
+    let (visible, visible_labels): (Vec<Vec<(f64, f64)>>, Vec<Vec<String>>) = prepared
         .series
         .iter()
-        .map(|pts| {
+        .zip(&prepared.labels)
+        .map(|(pts, labels)| {
             pts.iter()
                 .copied()
-                .filter(|&(u, v)| x_axis.contains(u) && y_axis.contains(v))
-                .collect()
+                .zip(labels.iter().cloned())
+                .filter(|&((u, v), _)| x_axis.contains(u) && y_axis.contains(v))
+                .unzip()
         })
-        .collect();
+        .unzip();
     let drawable: usize = prepared.series.iter().map(Vec::len).sum();
     let outside_range = drawable - visible.iter().map(Vec::len).sum::<usize>();
     let pieces: Vec<Vec<Vec<(f64, f64)>>> = prepared
@@ -126,7 +137,12 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
     let mut buf = String::new();
     {
         let root = SVGBackend::with_string(&mut buf, (WIDTH, HEIGHT)).into_drawing_area();
-        draw(&root, fig, &x_axis, &y_axis, &visible, &pieces, &notes)?;
+        let data = Data {
+            series: &visible,
+            labels: &visible_labels,
+            curves: &pieces,
+        };
+        draw(&root, fig, &x_axis, &y_axis, &data, &notes)?;
         root.present().map_err(drawing)?;
     }
     Ok(Rendered {
@@ -137,15 +153,23 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
     })
 }
 
+/// What is drawn inside the axes: the visible points of each series with their labels, and
+/// the visible pieces of each curve.
+struct Data<'a> {
+    series: &'a [Vec<(f64, f64)>],
+    labels: &'a [Vec<String>],
+    curves: &'a [Vec<Vec<(f64, f64)>>],
+}
+
 fn draw(
     root: &DrawingArea<SVGBackend<'_>, Shift>,
     fig: &Figure,
     x_axis: &AxisPlan,
     y_axis: &AxisPlan,
-    series: &[Vec<(f64, f64)>],
-    curves: &[Vec<Vec<(f64, f64)>>],
+    data: &Data<'_>,
     notes: &[String],
 ) -> Result<(), PlotError> {
+    let (series, curves) = (data.series, data.curves);
     root.fill(&WHITE).map_err(drawing)?;
 
     let widest_y_tick = y_axis
@@ -203,8 +227,30 @@ fn draw(
     }
     for (i, pts) in series.iter().enumerate() {
         let (marker, color) = (fig.series[i].marker, series_color(i));
+        if fig.series[i].joined && pts.len() > 1 {
+            let style = ShapeStyle::from(&color).stroke_width(1);
+            chart
+                .draw_series(std::iter::once(PathElement::new(pts.clone(), style)))
+                .map_err(drawing)?;
+        }
         chart
             .draw_series(pts.iter().map(|&at| Glyph { at, marker, color }))
+            .map_err(drawing)?;
+        let label_style = font(NOTE_PX).color(&color);
+        chart
+            .draw_series(
+                pts.iter()
+                    .zip(&data.labels[i])
+                    .filter(|(_, l)| !l.is_empty())
+                    .map(|(&at, l)| {
+                        EmptyElement::at(at)
+                            + Text::new(
+                                l.clone(),
+                                (MARKER_R + 2, -(MARKER_R + 2)),
+                                label_style.clone(),
+                            )
+                    }),
+            )
             .map_err(drawing)?;
     }
 
@@ -323,11 +369,13 @@ mod tests {
                     label: "τ0 = 4 MPa".into(),
                     points: a,
                     marker: Marker::Circle,
+                    ..Series::default()
                 },
                 Series {
                     label: "τ0 = 8 MPa".into(),
                     points: b,
                     marker: Marker::Square,
+                    ..Series::default()
                 },
             ],
             curves: vec![mastercurve(0.1, 3000.0, 5.0, 200)],
@@ -478,6 +526,7 @@ mod tests {
                 label: "bad".into(),
                 points: vec![(f64::NAN, f64::NAN), (0.0, -1.0), (-1.0, 0.0)],
                 marker: Marker::Cross,
+                ..Series::default()
             }],
             ..Figure::default()
         };

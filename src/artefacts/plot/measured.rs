@@ -17,6 +17,7 @@ pub fn svg(rows: &[ReducedRow], fitted: Option<f64>) -> Result<String, String> {
                 label: r.row.series.clone(),
                 points: vec![p],
                 marker: Marker::nth(series.len()),
+                ..Series::default()
             }),
         }
     }

@@ -105,7 +105,8 @@ impl Marker {
     }
 }
 
-/// A set of data points drawn as markers (no connecting line).
+/// A set of data points drawn as markers, optionally joined by a thin line in their order
+/// and labelled one by one.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Series {
     /// Legend label (may use the text markup of this module).
@@ -114,6 +115,11 @@ pub struct Series {
     pub points: Vec<(f64, f64)>,
     /// Marker shape.
     pub marker: Marker,
+    /// Join the points by a line in the series' colour, in their order (e.g. one case
+    /// through its grid levels).
+    pub joined: bool,
+    /// A short text beside each point (empty: none); missing entries are blank.
+    pub point_labels: Vec<String>,
 }
 
 /// A model curve drawn as a line through its points, in order.

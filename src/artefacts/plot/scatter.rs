@@ -65,6 +65,7 @@ pub fn svg(
                     label: key,
                     points: Vec::new(),
                     marker: MARKERS[(keys.len() - 1) % MARKERS.len()],
+                    ..Series::default()
                 });
                 keys.len() - 1
             }

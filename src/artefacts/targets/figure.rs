@@ -236,6 +236,7 @@ pub fn build(
             label: "line contact".into(),
             points: line_cases::line_points(&runs),
             marker: Marker::Cross,
+            ..Series::default()
         };
         (Some(runs), vec![series])
     } else {
