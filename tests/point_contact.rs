@@ -90,7 +90,7 @@ fn table4_levels_5_and_6_agree_with_the_paper() {
     let spec = Table4Case::shipped().unwrap();
     let rows = table4::compute(&spec, &[5, 6], |_| {}).unwrap();
     for row in &rows {
-        let s = row.outcome.as_ref().expect("Table 4 level solves");
+        let s = row.outcome.record().expect("Table 4 level solves");
         let (paper_hc, paper_mu) = row.paper().unwrap();
         let (next_hc, next_mu) = table4::paper_at(row.level + 1).unwrap();
         // Two implementations of the same discretisation differ by much less than the
@@ -99,22 +99,22 @@ fn table4_levels_5_and_6_agree_with_the_paper() {
         let mu_tol = 0.5 * (next_mu - paper_mu).abs();
         let hc_tol = 0.1 * (next_hc - paper_hc).abs();
         assert!(
-            (s.friction.sliding - paper_mu).abs() < mu_tol,
+            (s.mu_bar_sliding - paper_mu).abs() < mu_tol,
             "level {}: mu-bar {} vs {paper_mu}",
             row.level,
-            s.friction.sliding
+            s.mu_bar_sliding
         );
         assert!(
-            (s.film.h_central - paper_hc).abs() < hc_tol,
+            (s.h_central - paper_hc).abs() < hc_tol,
             "level {}: Hc {} vs {paper_hc}",
             row.level,
-            s.film.h_central
+            s.h_central
         );
     }
     // Second-order trend: the level-6 film is below the level-7 paper value by more than the
     // level-5 one is below level 6 divided by 4 (first order would give half, not a quarter).
-    let hc5 = rows[0].outcome.as_ref().unwrap().film.h_central;
-    let hc6 = rows[1].outcome.as_ref().unwrap().film.h_central;
+    let hc5 = rows[0].outcome.record().unwrap().h_central;
+    let hc6 = rows[1].outcome.record().unwrap().h_central;
     assert!(hc6 > hc5, "film must grow with resolution: {hc5} -> {hc6}");
 }
 

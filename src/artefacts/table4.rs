@@ -1,9 +1,10 @@
 //! Table 4: variation of the central film `H = h/c` and of the sliding reduced friction with
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
+use super::cache::{key_of, Stamp};
+use super::run::{case_key, describe, run_jobs, Job, Outcome, RunProgress, Store, Work};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
-use crate::solver::output::SolveError;
 use crate::solver::point::{solve, Params, Progress};
 use serde::Deserialize;
 
@@ -51,9 +52,9 @@ pub struct Row {
     /// Grid level.
     pub level: u32,
     /// The solve, or why it failed.
-    pub outcome: Result<crate::solver::point::PointSolution, SolveError>,
-    /// Wall time of the solve, s.
-    pub seconds: f64,
+    pub outcome: Outcome,
+    /// Wall time of the solve, s (unknown for a cache entry written before stamps).
+    pub seconds: Option<f64>,
     /// The case's characteristic shear stress, Eq. (12) (the same at every level).
     pub tau_c: f64,
 }
@@ -76,7 +77,8 @@ pub fn params(level: u32) -> Params {
     }
 }
 
-/// Solves the case at each level; `observer` hears of every cycle.
+/// Solves the case at each level, one after the other (the times are comparable);
+/// `observer` hears of every cycle. Nothing is cached: `repro table4` measures.
 pub fn compute(
     spec: &Table4Case,
     levels: &[u32],
@@ -86,15 +88,86 @@ pub fn compute(
     let mut rows = Vec::new();
     for &level in levels {
         let t = std::time::Instant::now();
-        let outcome = solve(&problem, &params(level), Some(&mut observer));
+        let solved = solve(&problem, &params(level), Some(&mut observer));
         rows.push(Row {
             level,
-            outcome,
-            seconds: t.elapsed().as_secs_f64(),
+            outcome: Outcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
+            seconds: Some(t.elapsed().as_secs_f64()),
             tau_c: problem.tau_c(),
         });
     }
     Ok(rows)
+}
+
+/// The solves of Table 4 at `levels` as jobs. The key adds the film check to the case key:
+/// at level 5 a non-positive film is reported here where a sweep refuses it ([`params`]).
+pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
+    let problem = spec.problem()?;
+    Ok(levels
+        .iter()
+        .map(|&level| {
+            let params = params(level);
+            Job {
+                key: key_of(&(
+                    "table4",
+                    case_key(&spec.case, &params),
+                    params.require_positive_film,
+                )),
+                label: format!("Appendix case ({})", describe(&spec.case, level)),
+                work: Work::Point {
+                    problem: problem.clone(),
+                    params,
+                },
+            }
+        })
+        .collect())
+}
+
+/// Table 4 as the target of `repro all` builds it: its rows, with each row's cache key and
+/// the stamp of its entry, and how many came from the cache.
+#[derive(Debug, Clone)]
+pub struct Stored {
+    /// One row per level.
+    pub rows: Vec<Row>,
+    /// The cache key of each row.
+    pub keys: Vec<String>,
+    /// How each row's result was made.
+    pub stamps: Vec<Option<Stamp>>,
+    /// Rows taken from the cache.
+    pub cached: usize,
+}
+
+/// Table 4 through `store`: each level's wall time is the one recorded when its entry was
+/// solved (solves run in parallel here, so a cold run's times are those of a shared machine;
+/// `repro table4` measures them one after the other).
+pub fn compute_stored(
+    spec: &Table4Case,
+    levels: &[u32],
+    store: Store,
+    progress: &(dyn Fn(RunProgress) + Sync),
+    warn: &(dyn Fn(String) + Sync),
+) -> Result<Stored, String> {
+    let tau_c = spec.problem()?.tau_c();
+    let jobs = jobs(spec, levels)?;
+    let done = run_jobs("table4", &jobs, store, progress, warn)?;
+    let cached = done.iter().filter(|d| d.cached).count();
+    let stamps = done.iter().map(|d| d.stamp.clone()).collect();
+    let rows = levels
+        .iter()
+        .zip(done)
+        .map(|(&level, d)| Row {
+            level,
+            seconds: d.stamp.map(|s| s.seconds),
+            outcome: d.outcome,
+            tau_c,
+        })
+        .collect();
+    Ok(Stored {
+        rows,
+        keys: jobs.into_iter().map(|j| j.key).collect(),
+        stamps,
+        cached,
+    })
 }
 
 /// CSV of the rows, with the paper's values beside ours.
@@ -125,27 +198,29 @@ pub fn to_csv(rows: &[Row]) -> String {
             let n = 1u32 << (r.level + 1);
             let paper = r.paper();
             let (hc, hcm, hmin, mu, cycles, res, status) = match &r.outcome {
-                Ok(s) => (
-                    num(s.film.h_central),
-                    num(s.film.hc_moes),
-                    num(s.film.h_min),
-                    num(s.friction.sliding),
-                    s.info.cycles.to_string(),
-                    num(s.info.residual()),
-                    if s.film.h_min > 0.0 {
+                Outcome::Solved(s) => (
+                    num(s.h_central),
+                    num(s.hc_moes),
+                    num(s.h_min),
+                    num(s.mu_bar_sliding),
+                    s.cycles.to_string(),
+                    num(s.residual),
+                    if s.h_min > 0.0 {
                         "ok"
                     } else {
                         "ok-film-nonpositive"
                     }
                     .to_string(),
                 ),
-                Err(e) => (
+                Outcome::Failed {
+                    residual_history, ..
+                } => (
                     String::new(),
                     String::new(),
                     String::new(),
                     String::new(),
-                    e.residual_history().len().to_string(),
-                    opt(e.residual_history().last().copied()),
+                    residual_history.len().to_string(),
+                    opt(residual_history.last().copied()),
                     "failed".into(),
                 ),
             };
@@ -162,13 +237,12 @@ pub fn to_csv(rows: &[Row]) -> String {
                 num(mastercurve(r.tau_c, PAPER_C)),
                 opt(r
                     .outcome
-                    .as_ref()
-                    .ok()
-                    .map(|s| implied_c(r.tau_c, s.friction.sliding))),
+                    .record()
+                    .map(|s| implied_c(r.tau_c, s.mu_bar_sliding))),
                 opt(paper.map(|p| implied_c(r.tau_c, p.1))),
                 cycles,
                 res,
-                format!("{:.3}", r.seconds),
+                r.seconds.map(|t| format!("{t:.3}")).unwrap_or_default(),
                 status,
             ]
         })
@@ -192,8 +266,8 @@ pub fn to_text(rows: &[Row]) -> String {
             .map(|p| format!("{:.2}", p.1))
             .unwrap_or_else(|| "-".into());
         match &r.outcome {
-            Ok(s) => {
-                let flag = if s.film.h_min > 0.0 {
+            Outcome::Solved(s) => {
+                let flag = if s.h_min > 0.0 {
                     ""
                 } else {
                     "  (min film <= 0: grid too coarse)"
@@ -202,16 +276,16 @@ pub fn to_text(rows: &[Row]) -> String {
                     "{:>5}  {:>9}  {:>11.4e}  {:>10}  {:>13.3}  {:>14}  {:>6}  {:>8.2}{}\n",
                     r.level,
                     format!("{n}x{n}"),
-                    s.film.h_central,
+                    s.h_central,
                     ph,
-                    s.friction.sliding,
+                    s.mu_bar_sliding,
                     pm,
-                    s.info.cycles,
-                    r.seconds,
+                    s.cycles,
+                    r.seconds.unwrap_or(f64::NAN),
                     flag
                 ));
             }
-            Err(e) => out.push_str(&format!(
+            Outcome::Failed { error: e, .. } => out.push_str(&format!(
                 "{:>5}  {:>9}  failed: {e}\n",
                 r.level,
                 format!("{n}x{n}")
@@ -229,7 +303,7 @@ pub fn mastercurve_note(rows: &[Row]) -> String {
     let Some((r, ours)) = rows
         .iter()
         .rev()
-        .find_map(|r| Some((r, r.outcome.as_ref().ok()?.friction.sliding)))
+        .find_map(|r| Some((r, r.outcome.record()?.mu_bar_sliding)))
     else {
         return String::new();
     };
