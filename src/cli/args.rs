@@ -183,7 +183,7 @@ pub struct TargetArgs {
     /// Solve only shard I of N (1-based) of the cases, split by cache key, into the cache;
     /// write no figures. Without it, a Slurm array task (SLURM_ARRAY_TASK_ID and
     /// SLURM_ARRAY_TASK_COUNT set) takes its shard from them. Other launchers hand the index
-    /// over: GNU parallel `--shard {#}/N`, HyperQueue `--shard $((HQ_TASK_ID+1))/N`.
+    /// over: GNU parallel `--shard {#}/N`, HyperQueue (array 1-N) `--shard $HQ_TASK_ID/N`.
     #[arg(long, value_name = "I/N", conflicts_with_all = ["offline", "no_cache"])]
     pub shard: Option<String>,
     /// Assemble from the cache alone, never solving: a case without an entry is an error

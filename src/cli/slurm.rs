@@ -108,9 +108,15 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
     }
     let per_task = solves.div_ceil(tasks);
     let level = args.level.unwrap_or(7);
-    let minutes = per_task as f64 * typical_seconds(level) / args.cpus as f64 / 60.0;
+    let seconds = per_task as f64 * typical_seconds(level) / args.cpus as f64;
+    let minutes = seconds / 60.0;
+    let took = if minutes < 1.0 {
+        format!("{seconds:.0} s")
+    } else {
+        format!("{minutes:.0} min")
+    };
     println!(
-        "{solves} solves in {tasks} array tasks: up to {per_task} per task, about {minutes:.1} min each on {} CPUs at level {level}{} (typical solves; heavy cases take several times longer)",
+        "{solves} solves in {tasks} array tasks: up to {per_task} per task, about {took} each on {} CPU(s) at level {level}{} (typical solves; heavy cases take several times longer)",
         args.cpus,
         if args.level.is_none() { " (the estimate's level; each target runs at its own)" } else { "" }
     );
