@@ -387,30 +387,44 @@ pub fn line_key<C: Serialize>(
 /// A readable description of a case, for listings.
 pub fn describe(case: &Case, level: u32) -> String {
     use crate::physics::case::{LubricantSpec, Spec};
+    // Seven significant digits, printed shortest: 0.30000000000000004 reads 0.3.
+    let g = |x: f64| -> String {
+        format!("{:.6e}", x)
+            .parse::<f64>()
+            .map_or_else(|_| x.to_string(), |r| r.to_string())
+    };
     let body = match &case.spec {
         Spec::Physical(p) => {
             let lub = match &p.lubricant {
                 LubricantSpec::Named {
                     lubricant,
                     temperature_c,
-                } => format!("{lubricant} at {temperature_c} C"),
+                } => format!("{lubricant} at {} C", g(*temperature_c)),
                 LubricantSpec::Given {
                     alpha_per_pa,
                     eta0_pa_s,
-                } => format!("alpha {alpha_per_pa:e} 1/Pa, eta0 {eta0_pa_s:e} Pa s"),
+                } => format!(
+                    "alpha {} 1/GPa, eta0 {} mPa s",
+                    g(alpha_per_pa * 1e9),
+                    g(eta0_pa_s * 1e3)
+                ),
             };
             format!(
                 "{lub}, p_H {} GPa, u_m {} m/s, S {}, tau0 {} MPa, Rx/Ry {}",
-                p.ph_pa / 1e9,
-                p.um_m_s,
-                p.slip,
-                p.tau0_pa / 1e6,
-                p.rx_m / p.ry_m
+                g(p.ph_pa / 1e9),
+                g(p.um_m_s),
+                g(p.slip),
+                g(p.tau0_pa / 1e6),
+                g(p.rx_m / p.ry_m)
             )
         }
         Spec::Dimensionless(d) => format!(
             "M {}, L {}, S-bar {}, Rx/Ry {}, S {}",
-            d.m, d.l, d.s_bar, d.d, d.slip
+            g(d.m),
+            g(d.l),
+            g(d.s_bar),
+            g(d.d),
+            g(d.slip)
         ),
     };
     format!("{body}, level {level}")

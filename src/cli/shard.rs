@@ -51,7 +51,12 @@ pub fn run(
     let start = Instant::now();
     in_context_writing(args, false, true, |ctx| {
         let all = list(ctx)?;
-        let total = all.len();
+        // Targets share cases (Figs. 1-3 draw one sweep): count each solve once.
+        let total = all
+            .iter()
+            .map(|(_, j)| j.key.as_str())
+            .collect::<std::collections::BTreeSet<_>>()
+            .len();
         let targets: Vec<String> = all.iter().map(|(t, _)| t.clone()).collect();
         let jobs: Vec<Job> = shard.select(all.iter().map(|(_, j)| j.clone()).collect());
         let target_of = |key: &str| {
