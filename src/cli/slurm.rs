@@ -121,12 +121,17 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
         if args.level.is_none() { " (the estimate's level; each target runs at its own)" } else { "" }
     );
     if minutes < 1.0 && tasks > 1 {
-        let fewer = ((solves as f64 * typical_seconds(level) / args.cpus as f64 / 300.0).ceil()
-            as usize)
-            .max(1);
-        println!(
-            "note: tasks this short spend more time being scheduled than solving; --tasks {fewer} gives each about 5 minutes"
-        );
+        let whole = solves as f64 * typical_seconds(level) / args.cpus as f64;
+        let fewer = ((whole / 300.0).ceil() as usize).max(1);
+        if fewer == 1 {
+            println!(
+                "note: tasks this short spend more time being scheduled than solving; the whole run is about {whole:.0} s of solves, one task (--tasks 1) is enough"
+            );
+        } else {
+            println!(
+                "note: tasks this short spend more time being scheduled than solving; --tasks {fewer} gives each about 5 minutes"
+            );
+        }
     }
     println!(
         "wrote {}, {} and {}",
