@@ -2,7 +2,7 @@
 CARGO ?= cargo
 LEVEL ?= 7
 
-.PHONY: build test figures table4 snapshots check lint bench clean
+.PHONY: build test figures table4 snapshots check lint bench clean slurm-check
 
 build:
 	$(CARGO) build --release
@@ -31,6 +31,13 @@ table4: build
 # study's cases per level, the cost of each effect, one whole target.
 bench:
 	$(CARGO) bench --bench solve
+
+# The sharded run against a real single-node Slurm (installs slurm-wlm and munge, starts and
+# stops its own daemons; needs root): the array of `repro slurm fig7 --tasks 3 --level 5`,
+# merged and assembled offline, byte for byte against a one-machine run. Not part of `make
+# test` (too slow, too privileged); `make test` runs the same round trip as local processes.
+slurm-check: build
+	scripts/slurm-check.sh
 
 lint:
 	$(CARGO) fmt --all -- --check

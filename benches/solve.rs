@@ -134,6 +134,7 @@ fn target(c: &mut Criterion) {
         progress: &progress,
         warn: &warn,
         stride: 1,
+        offline: false,
     };
     let mut group = c.benchmark_group("target");
     group.sample_size(10);

@@ -27,6 +27,8 @@ fn main() -> ExitCode {
         Command::Predict(a) => cli::predict::run(&a),
         Command::Check(a) => cli::check::run(&a),
         Command::Accuracy(a) => cli::accuracy::run(&a),
+        Command::Cache(a) => cli::cache::run(&a),
+        Command::Slurm(a) => cli::slurm::run(&a),
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,

@@ -2,7 +2,7 @@
 //! Eyring stress is caught, and neither the thread count nor a rerun changes a result.
 
 use crate::support::repro;
-use repro::artefacts::run::{run_cases, CaseRun};
+use repro::artefacts::run::{run_cases, CaseRun, Store};
 use repro::artefacts::snapshot::compare;
 use repro::artefacts::sweep::Sweep;
 use repro::artefacts::targets::figure::runs_csv;
@@ -92,7 +92,15 @@ fn csv_of(sweep: &Sweep, threads: usize) -> String {
         .build()
         .expect("pool");
     let runs: Vec<CaseRun> = pool.install(|| {
-        run_cases(&sweep.cases, &Params::at_level(5), None, &|_| {}, &|_| {}).expect("runs")
+        run_cases(
+            "test",
+            &sweep.cases,
+            &Params::at_level(5),
+            Store::Nothing,
+            &|_| {},
+            &|_| {},
+        )
+        .expect("runs")
     });
     runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", |r| {
         r.record()

@@ -5,6 +5,7 @@ mod cli;
 mod line_contact;
 mod point_contact;
 mod predict;
+mod shards;
 mod support;
 mod text;
 mod traction;

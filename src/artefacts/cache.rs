@@ -1,7 +1,9 @@
 //! The result cache: one JSON file per solved case, keyed by the SHA-256 of the canonical case,
-//! the level, the domain and the solver revision. Entries are written atomically (temporary
-//! file, then rename) and carry the SHA-256 of their payload, checked on read: a corrupt entry
-//! is reported and recomputed, never trusted.
+//! the level, the domain and the solver revision. An entry holds the result (the payload, the
+//! same bytes wherever the case was solved) and its [`Stamp`] (which build solved it, where,
+//! how long it took). Entries are written atomically (temporary file, then rename) and carry
+//! the SHA-256 of payload and stamp, checked on read: a corrupt entry is reported and
+//! recomputed, never trusted.
 
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
 use sha2::{Digest, Sha256};
@@ -26,18 +28,85 @@ pub fn key_of<T: Serialize>(value: &T) -> String {
     )
 }
 
+/// How an entry was made: which build of `repro` solved the case, where, and how long it
+/// took. Kept beside the result, not in it: two runs of the same case on the same kind of
+/// machine give the same result bytes but never the same wall time.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Stamp {
+    /// `repro`'s crate version.
+    pub repro_version: String,
+    /// Git revision of the build (`-dirty` when the work tree had changes; `unknown` outside
+    /// a git checkout).
+    pub git_revision: String,
+    /// Host name of the machine that solved it.
+    pub host: String,
+    /// Wall time of the solve, s.
+    pub seconds: f64,
+}
+
+impl Stamp {
+    /// The stamp of a solve of `seconds` by this build on this machine.
+    pub fn now(seconds: f64) -> Self {
+        Stamp {
+            repro_version: env!("CARGO_PKG_VERSION").to_string(),
+            git_revision: GIT_REVISION.to_string(),
+            host: host_name(),
+            seconds,
+        }
+    }
+}
+
+/// Git revision of this build (set by `build.rs`).
+pub const GIT_REVISION: &str = env!("REPRO_GIT_REVISION");
+
+/// This machine's host name (Linux), else `HOSTNAME`, else `unknown`.
+fn host_name() -> String {
+    std::fs::read_to_string("/proc/sys/kernel/hostname")
+        .ok()
+        .or_else(|| std::env::var("HOSTNAME").ok())
+        .map(|h| h.trim().to_string())
+        .filter(|h| !h.is_empty())
+        .unwrap_or_else(|| "unknown".into())
+}
+
+/// An entry as stored. `sha256` covers the payload followed by the stamp's text (the payload
+/// alone in entries written before stamps, which still read).
 #[derive(Serialize, Deserialize)]
 struct Entry {
     key: String,
     sha256: String,
     payload: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    stamp: Option<String>,
+}
+
+impl Entry {
+    fn checksum(payload: &str, stamp: Option<&str>) -> String {
+        match stamp {
+            Some(s) => sha256_hex(format!("{payload}\n{s}").as_bytes()),
+            None => sha256_hex(payload.as_bytes()),
+        }
+    }
+}
+
+/// A verified entry as stored: what `repro cache merge` compares and copies.
+#[derive(Debug, Clone)]
+pub struct RawEntry {
+    /// The key.
+    pub key: String,
+    /// The result's canonical JSON: the content that must agree wherever it was computed.
+    pub payload: String,
+    /// How it was made (`None` in entries written before stamps).
+    pub stamp: Option<Stamp>,
+    /// The file's bytes, copied as they are.
+    pub text: String,
 }
 
 /// What a read found.
 #[derive(Debug)]
 pub enum Lookup<T> {
-    /// A verified entry.
-    Hit(T),
+    /// A verified entry and how it was made (`None` for entries written before stamps).
+    Hit(T, Option<Stamp>),
     /// No entry.
     Miss,
     /// An entry that failed verification (the reason), to be recomputed.
@@ -61,52 +130,117 @@ impl Cache {
         &self.dir
     }
 
-    fn path(&self, key: &str) -> PathBuf {
+    /// The file of `key`.
+    pub fn path(&self, key: &str) -> PathBuf {
         self.dir.join(&key[..2]).join(format!("{key}.json"))
+    }
+
+    /// Reads and verifies the entry of `key` as stored (`Ok(None)` when there is none; the
+    /// error names the file and what is wrong).
+    pub fn get_raw(&self, key: &str) -> Result<Option<RawEntry>, String> {
+        let path = self.path(key);
+        let text = match std::fs::read_to_string(&path) {
+            Ok(t) => t,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+            Err(e) => return Err(format!("{}: {e}", path.display())),
+        };
+        let entry: Entry = serde_json::from_str(&text)
+            .map_err(|e| format!("{}: not a cache entry: {e}", path.display()))?;
+        if entry.key != key {
+            return Err(format!(
+                "{}: field key: {} does not match the file name",
+                path.display(),
+                entry.key
+            ));
+        }
+        if Entry::checksum(&entry.payload, entry.stamp.as_deref()) != entry.sha256 {
+            return Err(format!("{}: field sha256: hash mismatch", path.display()));
+        }
+        let stamp = match &entry.stamp {
+            Some(s) => Some(
+                serde_json::from_str(s)
+                    .map_err(|e| format!("{}: field stamp: {e}", path.display()))?,
+            ),
+            None => None,
+        };
+        Ok(Some(RawEntry {
+            key: entry.key,
+            payload: entry.payload,
+            stamp,
+            text,
+        }))
     }
 
     /// Reads and verifies the entry of `key`.
     pub fn get<T: DeserializeOwned>(&self, key: &str) -> Lookup<T> {
-        let path = self.path(key);
-        let text = match std::fs::read_to_string(&path) {
-            Ok(t) => t,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Lookup::Miss,
-            Err(e) => return Lookup::Corrupt(format!("{}: {e}", path.display())),
-        };
-        let entry: Entry = match serde_json::from_str(&text) {
-            Ok(e) => e,
-            Err(e) => {
-                return Lookup::Corrupt(format!("{}: not a cache entry: {e}", path.display()))
-            }
-        };
-        if entry.key != key || sha256_hex(entry.payload.as_bytes()) != entry.sha256 {
-            return Lookup::Corrupt(format!("{}: hash mismatch", path.display()));
-        }
-        match serde_json::from_str(&entry.payload) {
-            Ok(v) => Lookup::Hit(v),
-            Err(e) => Lookup::Corrupt(format!("{}: payload: {e}", path.display())),
+        match self.get_raw(key) {
+            Ok(None) => Lookup::Miss,
+            Err(why) => Lookup::Corrupt(why),
+            Ok(Some(raw)) => match serde_json::from_str(&raw.payload) {
+                Ok(v) => Lookup::Hit(v, raw.stamp),
+                Err(e) => {
+                    Lookup::Corrupt(format!("{}: field payload: {e}", self.path(key).display()))
+                }
+            },
         }
     }
 
-    /// Writes the entry of `key` atomically.
-    pub fn put<T: Serialize>(&self, key: &str, value: &T) -> std::io::Result<()> {
+    /// Writes the entry of `key` atomically, with how it was made.
+    pub fn put<T: Serialize>(&self, key: &str, value: &T, stamp: &Stamp) -> std::io::Result<()> {
         let payload = serde_json::to_string(value).map_err(std::io::Error::other)?;
+        let stamp = serde_json::to_string(stamp).map_err(std::io::Error::other)?;
         let entry = Entry {
             key: key.to_string(),
-            sha256: sha256_hex(payload.as_bytes()),
+            sha256: Entry::checksum(&payload, Some(&stamp)),
             payload,
+            stamp: Some(stamp),
         };
         let text = serde_json::to_string(&entry).map_err(std::io::Error::other)?;
+        self.put_raw(key, &text)
+    }
+
+    /// Writes the bytes of an entry for `key` atomically (temporary file, then rename).
+    pub fn put_raw(&self, key: &str, text: &str) -> std::io::Result<()> {
         let path = self.path(key);
         if let Some(dir) = path.parent() {
             std::fs::create_dir_all(dir)?;
         }
-        // A per-thread temporary name: parallel writers of the same key never share one.
+        // A temporary name per process and thread: writers of the same key, in this process
+        // or in another on a shared file system, never share one.
         let tmp = path.with_extension(
-            format!("tmp{:?}", std::thread::current().id()).replace(['(', ')'], ""),
+            format!(
+                "tmp{}-{:?}",
+                std::process::id(),
+                std::thread::current().id()
+            )
+            .replace(['(', ')'], ""),
         );
         std::fs::write(&tmp, text)?;
         std::fs::rename(&tmp, &path)
+    }
+
+    /// Every key with an entry file, sorted (temporary files and anything else left out).
+    pub fn keys(&self) -> Result<Vec<String>, String> {
+        let mut keys = Vec::new();
+        let top = match std::fs::read_dir(&self.dir) {
+            Ok(t) => t,
+            Err(e) => return Err(format!("{}: {e}", self.dir.display())),
+        };
+        for sub in top.flatten() {
+            let Ok(files) = std::fs::read_dir(sub.path()) else {
+                continue;
+            };
+            for f in files.flatten() {
+                let name = f.file_name().to_string_lossy().into_owned();
+                if let Some(key) = name.strip_suffix(".json") {
+                    if key.len() == 64 && key.bytes().all(|b| b.is_ascii_hexdigit()) {
+                        keys.push(key.to_string());
+                    }
+                }
+            }
+        }
+        keys.sort();
+        Ok(keys)
     }
 }
 
@@ -126,11 +260,13 @@ mod tests {
         let cache = Cache::new(temp_dir("rt"));
         let key = key_of(&("case", 7u32));
         assert!(matches!(cache.get::<Vec<f64>>(&key), Lookup::Miss));
-        cache.put(&key, &vec![1.5, -2.0]).unwrap();
+        let stamp = Stamp::now(0.25);
+        cache.put(&key, &vec![1.5, -2.0], &stamp).unwrap();
         match cache.get::<Vec<f64>>(&key) {
-            Lookup::Hit(v) => assert_eq!(v, vec![1.5, -2.0]),
+            Lookup::Hit(v, s) => assert_eq!((v, s), (vec![1.5, -2.0], Some(stamp.clone()))),
             other => panic!("{other:?}"),
         }
+        assert_eq!(cache.keys().unwrap(), vec![key.clone()]);
         // Flip one digit of the payload: the hash no longer matches.
         let path = cache.path(&key);
         let text = std::fs::read_to_string(&path)
@@ -140,6 +276,34 @@ mod tests {
         assert!(matches!(cache.get::<Vec<f64>>(&key), Lookup::Corrupt(_)));
         std::fs::write(&path, "{ truncated").unwrap();
         assert!(matches!(cache.get::<Vec<f64>>(&key), Lookup::Corrupt(_)));
+        // The stamp is covered by the hash too: a changed wall time is caught.
+        cache.put(&key, &vec![1.5], &stamp).unwrap();
+        let text = std::fs::read_to_string(&path)
+            .unwrap()
+            .replace("0.25", "0.5");
+        std::fs::write(&path, text).unwrap();
+        match cache.get::<Vec<f64>>(&key) {
+            Lookup::Corrupt(why) => assert!(why.contains("sha256"), "{why}"),
+            other => panic!("{other:?}"),
+        }
+        let _ = std::fs::remove_dir_all(cache.dir());
+    }
+
+    /// Entries written before stamps (the SHA-256 of the payload alone) still read.
+    #[test]
+    fn entries_without_a_stamp_still_read() {
+        let cache = Cache::new(temp_dir("legacy"));
+        let key = key_of(&"legacy");
+        let payload = "[2.5]";
+        let text = format!(
+            "{{\"key\":\"{key}\",\"sha256\":\"{}\",\"payload\":\"{payload}\"}}",
+            sha256_hex(payload.as_bytes())
+        );
+        cache.put_raw(&key, &text).unwrap();
+        match cache.get::<Vec<f64>>(&key) {
+            Lookup::Hit(v, None) => assert_eq!(v, vec![2.5]),
+            other => panic!("{other:?}"),
+        }
         let _ = std::fs::remove_dir_all(cache.dir());
     }
 

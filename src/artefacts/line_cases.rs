@@ -1,14 +1,15 @@
 //! The line contacts of Fig. 7: the five Table 3 load cases of `cases/fig7.toml` (mineral oil
 //! A, Roelands, Dowson-Higginson, Eyring) without their `Ry`, solved by the 1-D solver.
 
+use super::cache::Stamp;
 use super::csv::{num, table};
 use super::fit::{mastercurve, PAPER_C};
+use super::run::{line_key, run_jobs, Job, Outcome, RunProgress, Store, Work};
 use super::sweep::shipped_sweep;
 use crate::physics::case::{Physics, Spec};
 use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
 use crate::physics::lubricant::LubricantTable;
-use crate::solver::line::{solve, LineSolution, Params};
-use rayon::prelude::*;
+use crate::solver::line::Params;
 
 /// The five Table 3 cases as line contacts, in the order of the table, with the physics of
 /// Figs. 4-7. The rows are read from the shipped `cases/fig7.toml` (its `D = 1/2` block), the
@@ -42,27 +43,71 @@ pub struct LineRun {
     pub case: LinePhysicalCase,
     /// Its problem (groups, `tau_c`).
     pub problem: LineProblem,
-    /// The solution, or the solver's error as text.
-    pub outcome: Result<LineSolution, String>,
+    /// Solved or failed.
+    pub outcome: Outcome,
+    /// Its cache key.
+    pub key: String,
+    /// How its result was made (`None` for cache entries written before stamps).
+    pub stamp: Option<Stamp>,
+    /// Taken from the cache.
+    pub cached: bool,
 }
 
-/// Solves the five Table 3 line contacts at `level` (in parallel, each on one thread).
-pub fn solve_table3(level: u32) -> Result<Vec<LineRun>, String> {
+/// The five Table 3 line contacts at `level` as jobs (labelled `line contact 1..5`), with
+/// their cases and problems.
+pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem)>, String> {
     let (cases, physics) = table3_line_cases()?;
     let params = Params::at_level(level);
     cases
-        .into_par_iter()
-        .map(|case| {
+        .into_iter()
+        .enumerate()
+        .map(|(i, case)| {
             let problem = LineProblem::from_physical(&case, physics)
                 .map_err(|e| format!("cases/fig7.toml: line contact: {e}"))?;
-            let outcome = solve(&problem, &params, None).map_err(|e| e.to_string());
-            Ok(LineRun {
-                case,
-                problem,
-                outcome,
-            })
+            let job = Job {
+                key: line_key(&case, &physics, &params),
+                label: format!(
+                    "line contact {} (p_H {} GPa, u_m {} m/s, S {}, tau0 {} MPa, level {level})",
+                    i + 1,
+                    case.ph_pa / 1e9,
+                    case.um_m_s,
+                    case.slip,
+                    case.tau0_pa / 1e6
+                ),
+                work: Work::Line {
+                    problem: problem.clone(),
+                    params: params.clone(),
+                },
+            };
+            Ok((job, case, problem))
         })
         .collect()
+}
+
+/// Solves the five Table 3 line contacts at `level` through `store` (in parallel, each on one
+/// thread); `target` names them in errors.
+pub fn solve_table3(
+    target: &str,
+    level: u32,
+    store: Store,
+    progress: &(dyn Fn(RunProgress) + Sync),
+    warn: &(dyn Fn(String) + Sync),
+) -> Result<Vec<LineRun>, String> {
+    let jobs = table3_jobs(level)?;
+    let list: Vec<Job> = jobs.iter().map(|(j, _, _)| j.clone()).collect();
+    let done = run_jobs(target, &list, store, progress, warn)?;
+    Ok(jobs
+        .into_iter()
+        .zip(done)
+        .map(|((job, case, problem), d)| LineRun {
+            case,
+            problem,
+            outcome: d.outcome,
+            key: job.key,
+            stamp: d.stamp,
+            cached: d.cached,
+        })
+        .collect())
 }
 
 /// `fig7-line.csv`: one row per line contact, the columns of the point-contact CSV that apply.
@@ -86,7 +131,6 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
         "mu_bar_sliding",
         "rel_dev_eq13",
         "cycles",
-        "seconds",
         "status",
     ];
     let rows: Vec<Vec<String>> = runs
@@ -111,19 +155,21 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                 num(eq13),
             ];
             match &r.outcome {
-                Ok(s) => row.extend([
-                    num(s.film.h_central),
-                    num(s.film.hc_moes),
-                    num(s.film.hmin_moes),
-                    num(s.friction.sliding),
-                    num(s.friction.sliding / eq13 - 1.0),
-                    s.info.cycles.to_string(),
-                    format!("{:.3}", s.info.seconds),
+                Outcome::Solved(s) => row.extend([
+                    num(s.h_central),
+                    num(s.hc_moes),
+                    num(s.hmin_moes),
+                    num(s.mu_bar_sliding),
+                    num(s.mu_bar_sliding / eq13 - 1.0),
+                    s.cycles.to_string(),
                     "solved".into(),
                 ]),
-                Err(e) => {
-                    row.extend(std::iter::repeat_n(String::new(), 7));
-                    row.push(format!("failed: {}", super::run::failure_kind(e)));
+                Outcome::Failed { .. } => {
+                    row.extend(std::iter::repeat_n(String::new(), 6));
+                    row.push(format!(
+                        "failed: {}",
+                        r.outcome.failure_kind().unwrap_or("failed")
+                    ));
                 }
             }
             row
@@ -137,9 +183,8 @@ pub fn line_points(runs: &[LineRun]) -> Vec<(f64, f64)> {
     runs.iter()
         .filter_map(|r| {
             r.outcome
-                .as_ref()
-                .ok()
-                .map(|s| (r.problem.tau_c(), s.friction.sliding))
+                .record()
+                .map(|s| (r.problem.tau_c(), s.mu_bar_sliding))
         })
         .collect()
 }

@@ -4,6 +4,7 @@
 //! no fonts, no network).
 
 use super::csv::{reader, records, sci_opt};
+use super::provenance;
 use super::target::{write, Built, Context};
 use super::targets::{build, target};
 use serde::Serialize;
@@ -137,6 +138,15 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
             100.0 * f.max_rel_dev
         ));
     }
+    for f in b.files.iter().filter(|f| f.ends_with(provenance::SUFFIX)) {
+        if let Some(text) = read(f) {
+            s.push_str(&format!(
+                "<dt>made by</dt><dd>{} (<a href=\"{}\">cache keys and stamps</a>)</dd>\n",
+                escape(&provenance::summary_of(&text)),
+                escape(f)
+            ));
+        }
+    }
     s.push_str("</dl>\n");
     for f in &b.files {
         if f.ends_with(".svg") {
@@ -247,9 +257,20 @@ mod tests {
         };
         let b = [
             built("table1", &["table1.csv"], None),
-            built("fig3", &["fig3.csv", "fig3.svg"], Some(fit)),
+            built(
+                "fig3",
+                &["fig3.csv", "fig3.svg", "fig3.provenance.json"],
+                Some(fit),
+            ),
         ];
-        let read = |f: &str| (f == "table1.csv").then(|| "a,b\n1,2\n".to_string());
+        let mut sidecar = provenance::Provenance::new("fig3", &["fig3.csv".into()]);
+        sidecar.level = Some(7);
+        let sidecar = sidecar.to_json();
+        let read = |f: &str| match f {
+            "table1.csv" => Some("a,b\n1,2\n".to_string()),
+            "fig3.provenance.json" => Some(sidecar.clone()),
+            _ => None,
+        };
         let page = index_html(&b, &read);
         assert!(page.contains("href=\"#table1\"") && page.contains("href=\"#fig3\""));
         assert!(page.contains("<img src=\"fig3.svg\""));
@@ -260,6 +281,11 @@ mod tests {
         assert!(page.contains("ours: c = 4.93 over 2 points, RMS deviation from Eq. (13) 2.1 %"));
         assert!(page.contains("table1 &lt;title&gt;") && page.contains("4.93 &amp; more"));
         assert!(!page.contains("<title>table1"), "titles are escaped");
+        assert!(
+            page.contains("<dt>made by</dt><dd>repro ")
+                && page.contains("level 7, no solves (<a href=\"fig3.provenance.json\">"),
+            "the sidecar is shown: {page}"
+        );
     }
 
     #[test]

@@ -1,13 +1,13 @@
 //! Table 4: variation of the central film `H = h/c` and of the sliding reduced friction with
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
-use super::cache::{key_of, Cache, Lookup};
-use super::run::{case_key, Outcome, Record};
+use super::cache::{key_of, Stamp};
+use super::run::{case_key, describe, run_jobs, Job, Outcome, RunProgress, Store, Work};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::solver::output::Progress;
 use crate::solver::point::{solve, Params};
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 
 /// The case definition shipped in `cases/table4.toml`.
 pub const CASE_TOML: &str = include_str!("../../cases/table4.toml");
@@ -54,13 +54,10 @@ pub struct Row {
     pub level: u32,
     /// The solve, or why it failed.
     pub outcome: Outcome,
-    /// Wall time of the solve, s, measured when it was computed (also when it comes from
-    /// the cache).
-    pub seconds: f64,
+    /// Wall time of the solve, s (unknown for a cache entry written before stamps).
+    pub seconds: Option<f64>,
     /// The case's characteristic shear stress, Eq. (12) (the same at every level).
     pub tau_c: f64,
-    /// Whether the level came from the cache.
-    pub cached: bool,
 }
 
 impl Row {
@@ -68,18 +65,6 @@ impl Row {
     pub fn paper(&self) -> Option<(f64, f64)> {
         paper_at(self.level)
     }
-
-    /// The solved level's record, if it solved.
-    pub fn solved(&self) -> Option<&Record> {
-        self.outcome.record()
-    }
-}
-
-/// A level's outcome and its wall time: what the cache keeps of a Table 4 level.
-#[derive(Debug, Clone, Serialize, Deserialize)]
-struct Level {
-    outcome: Outcome,
-    seconds: f64,
 }
 
 /// Solver parameters for a Table 4 level: the defaults, except that at level 5 a
@@ -93,58 +78,97 @@ pub fn params(level: u32) -> Params {
     }
 }
 
-/// The cache key of a Table 4 level: the case's key at the level's parameters, marked as
-/// Table 4's (whose level 5 accepts a closed film, unlike a sweep's).
-fn level_key(case: &Case, level: u32) -> String {
-    let params = params(level);
-    key_of(&(
-        "table4",
-        case_key(case, &params),
-        params.require_positive_film,
-    ))
-}
-
-/// Solves the case at each level, or takes the level from `cache` (and fills it);
-/// `observer` hears of every cycle of a solve, `warn` of a corrupt cache entry or one that
-/// cannot be written.
+/// Solves the case at each level, one after the other (the times are comparable);
+/// `observer` hears of every cycle. Nothing is cached: `repro table4` measures.
 pub fn compute(
     spec: &Table4Case,
     levels: &[u32],
-    cache: Option<&Cache>,
     mut observer: impl FnMut(&Progress),
-    warn: &dyn Fn(String),
 ) -> Result<Vec<Row>, String> {
     let problem = spec.problem()?;
     let mut rows = Vec::new();
     for &level in levels {
-        let key = level_key(&spec.case, level);
-        let (found, cached) = match cache.map(|c| c.get::<Level>(&key)) {
-            Some(Lookup::Hit(found)) => (found, true),
-            other => {
-                if let Some(Lookup::Corrupt(why)) = other {
-                    warn(format!("corrupt cache entry recomputed: {why}"));
-                }
-                let t = std::time::Instant::now();
-                let solved = solve(&problem, &params(level), Some(&mut observer));
-                let found = Level {
-                    outcome: Outcome::of(&solved),
-                    seconds: t.elapsed().as_secs_f64(),
-                };
-                if let Some(Err(e)) = cache.map(|c| c.put(&key, &found)) {
-                    warn(format!("cannot write the Table 4 cache entry: {e}"));
-                }
-                (found, false)
-            }
-        };
+        let t = std::time::Instant::now();
+        let solved = solve(&problem, &params(level), Some(&mut observer));
         rows.push(Row {
             level,
-            outcome: found.outcome,
-            seconds: found.seconds,
+            outcome: Outcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
+            seconds: Some(t.elapsed().as_secs_f64()),
             tau_c: problem.tau_c(),
-            cached,
         });
     }
     Ok(rows)
+}
+
+/// The solves of Table 4 at `levels` as jobs. The key adds the film check to the case key:
+/// at level 5 a non-positive film is reported here where a sweep refuses it ([`params`]).
+pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
+    let problem = spec.problem()?;
+    Ok(levels
+        .iter()
+        .map(|&level| {
+            let params = params(level);
+            Job {
+                key: key_of(&(
+                    "table4",
+                    case_key(&spec.case, &params),
+                    params.require_positive_film,
+                )),
+                label: format!("Appendix case ({})", describe(&spec.case, level)),
+                work: Work::Point {
+                    problem: problem.clone(),
+                    params,
+                },
+            }
+        })
+        .collect())
+}
+
+/// Table 4 as the target of `repro all` builds it: its rows, with each row's cache key and
+/// the stamp of its entry, and how many came from the cache.
+#[derive(Debug, Clone)]
+pub struct Stored {
+    /// One row per level.
+    pub rows: Vec<Row>,
+    /// The cache key of each row.
+    pub keys: Vec<String>,
+    /// How each row's result was made.
+    pub stamps: Vec<Option<Stamp>>,
+    /// Rows taken from the cache.
+    pub cached: usize,
+}
+
+/// Table 4 through `store`: each level's wall time is the one recorded when its entry was
+/// solved (solves run in parallel here, so a cold run's times are those of a shared machine;
+/// `repro table4` measures them one after the other).
+pub fn compute_stored(
+    spec: &Table4Case,
+    levels: &[u32],
+    store: Store,
+    progress: &(dyn Fn(RunProgress) + Sync),
+    warn: &(dyn Fn(String) + Sync),
+) -> Result<Stored, String> {
+    let tau_c = spec.problem()?.tau_c();
+    let jobs = jobs(spec, levels)?;
+    let done = run_jobs("table4", &jobs, store, progress, warn)?;
+    let cached = done.iter().filter(|d| d.cached).count();
+    let stamps = done.iter().map(|d| d.stamp.clone()).collect();
+    let rows = levels
+        .iter()
+        .zip(done)
+        .map(|(&level, d)| Row {
+            level,
+            seconds: d.stamp.map(|s| s.seconds),
+            outcome: d.outcome,
+            tau_c,
+        })
+        .collect();
+    Ok(Stored {
+        rows,
+        keys: jobs.into_iter().map(|j| j.key).collect(),
+        stamps,
+        cached,
+    })
 }
 
 /// CSV of the rows, with the paper's values beside ours.
@@ -212,11 +236,14 @@ pub fn to_csv(rows: &[Row]) -> String {
                 opt(paper.map(|p| p.1)),
                 num(r.tau_c),
                 num(mastercurve(r.tau_c, PAPER_C)),
-                opt(r.solved().map(|s| implied_c(r.tau_c, s.mu_bar_sliding))),
+                opt(r
+                    .outcome
+                    .record()
+                    .map(|s| implied_c(r.tau_c, s.mu_bar_sliding))),
                 opt(paper.map(|p| implied_c(r.tau_c, p.1))),
                 cycles,
                 res,
-                format!("{:.3}", r.seconds),
+                r.seconds.map(|t| format!("{t:.3}")).unwrap_or_default(),
                 status,
             ]
         })
@@ -255,12 +282,12 @@ pub fn to_text(rows: &[Row]) -> String {
                     s.mu_bar_sliding,
                     pm,
                     s.cycles,
-                    r.seconds,
+                    r.seconds.unwrap_or(f64::NAN),
                     flag
                 ));
             }
-            Outcome::Failed { error, .. } => out.push_str(&format!(
-                "{:>5}  {:>9}  failed: {error}\n",
+            Outcome::Failed { error: e, .. } => out.push_str(&format!(
+                "{:>5}  {:>9}  failed: {e}\n",
                 r.level,
                 format!("{n}x{n}")
             )),
@@ -277,7 +304,7 @@ pub fn mastercurve_note(rows: &[Row]) -> String {
     let Some((r, ours)) = rows
         .iter()
         .rev()
-        .find_map(|r| Some((r, r.solved()?.mu_bar_sliding)))
+        .find_map(|r| Some((r, r.outcome.record()?.mu_bar_sliding)))
     else {
         return String::new();
     };

@@ -5,7 +5,7 @@
 use super::cache::Cache;
 use super::csv::write_atomic;
 use super::fit::Fit;
-use super::run::RunProgress;
+use super::run::{RunProgress, Store};
 use std::path::{Path, PathBuf};
 
 /// The paper's working level (256 x 256), the default of every computed figure.
@@ -30,6 +30,19 @@ pub struct Context<'a> {
     /// Solve every `stride`-th case of sweeps larger than [`SAMPLED_ABOVE`] cases (the
     /// snapshot profile); 1 solves them all.
     pub stride: usize,
+    /// Assemble from the cache alone (`--offline`): a case without an entry is an error.
+    pub offline: bool,
+}
+
+impl Context<'_> {
+    /// Where the solves of a target come from and go.
+    pub fn store(&self) -> Store<'_> {
+        match (&self.cache, self.offline) {
+            (None, _) => Store::Nothing,
+            (Some(c), false) => Store::Cache(c),
+            (Some(c), true) => Store::Offline(c),
+        }
+    }
 }
 
 /// Sweeps with more cases than this are sampled when [`Context::stride`] is above 1.

@@ -68,6 +68,86 @@ pub enum Command {
     Accuracy(AccuracyArgs),
     /// List the targets.
     List,
+    /// The result cache: merge caches of shards or of other machines.
+    Cache(CacheArgs),
+    /// Write sbatch scripts that run targets as a Slurm job array (one shard per task), then
+    /// merge the shards' caches and assemble the figures in a dependent job.
+    ///
+    /// Writes <dir>/<name>.array.sbatch (the array: task i solves shard i of --tasks into its
+    /// own cache, log per task), <dir>/<name>.assemble.sbatch (after every task succeeded:
+    /// `repro cache merge` of the shards' caches into --cache, then each target with
+    /// --offline into --out) and <dir>/<name>.submit.sh (submits both), and prints how to
+    /// submit them. Nothing is submitted.
+    Slurm(SlurmArgs),
+}
+
+/// `repro cache ...`.
+#[derive(Debug, Args)]
+pub struct CacheArgs {
+    #[command(subcommand)]
+    pub command: CacheCommand,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum CacheCommand {
+    /// Copy the verified entries of SRC caches into DST, by content hash.
+    ///
+    /// An entry DST lacks is copied as it is; one DST has with the same result is counted
+    /// (the stamp of DST's is kept: who solved it and how long it took may differ); one DST
+    /// has with a different result is refused and named by its key, as is a source entry that
+    /// fails verification. Exits 1 when any entry was refused, 2 when a folder cannot be read
+    /// or written.
+    Merge(MergeArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct MergeArgs {
+    /// Source cache folders (e.g. the caches of the shards of a job array).
+    #[arg(required = true, value_name = "SRC")]
+    pub sources: Vec<PathBuf>,
+    /// The cache to merge into (created if absent).
+    #[arg(long, value_name = "DST")]
+    pub into: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct SlurmArgs {
+    /// Targets to run (names of `repro list`, or `all`).
+    #[arg(required = true, value_name = "TARGET")]
+    pub targets: Vec<String>,
+    /// Array tasks: the solves are split into this many shards, one per task, each a batch
+    /// of cases (aim for minutes per task; the estimate printed helps). Lowered to the number
+    /// of solves when above it.
+    #[arg(long)]
+    pub tasks: usize,
+    /// Grid level of the computed targets (default: each target's level, as `repro <target>`).
+    #[arg(long)]
+    pub level: Option<u32>,
+    /// Slurm partition (default: the cluster's default partition).
+    #[arg(long)]
+    pub partition: Option<String>,
+    /// Wall-time limit of each array task, as Slurm takes it (e.g. 30, 2:00:00, 1-00:00:00).
+    #[arg(long, default_value = "1:00:00")]
+    pub time: String,
+    /// CPUs per array task (the solves of a task run in parallel on them).
+    #[arg(long, default_value_t = 2)]
+    pub cpus: usize,
+    /// Folder of the scripts, the shards' caches (caches/) and the logs (logs/); must be on
+    /// a file system the compute nodes share.
+    #[arg(long, default_value = "slurm")]
+    pub dir: PathBuf,
+    /// The cache the assembly merges the shards into.
+    #[arg(long, default_value = ".repro-cache")]
+    pub cache: PathBuf,
+    /// Output folder of the assembled figures.
+    #[arg(long, default_value = "figures")]
+    pub out: PathBuf,
+    /// The repro binary the jobs run (default: this one).
+    #[arg(long)]
+    pub repro: Option<PathBuf>,
+    /// Name of the job and of the scripts (default: repro-<first target>).
+    #[arg(long)]
+    pub name: Option<String>,
 }
 
 #[derive(Debug, Args)]
@@ -100,6 +180,17 @@ pub struct TargetArgs {
     /// Recompute every case, ignoring and not filling the cache.
     #[arg(long = "no-cache")]
     pub no_cache: bool,
+    /// Solve only shard I of N (1-based) of the cases, split by cache key, into the cache;
+    /// write no figures. Without it, a Slurm array task (SLURM_ARRAY_TASK_ID and
+    /// SLURM_ARRAY_TASK_COUNT set) takes its shard from them. Other launchers hand the index
+    /// over: GNU parallel `--shard {#}/N`, HyperQueue (array 1-N) `--shard $HQ_TASK_ID/N`.
+    #[arg(long, value_name = "I/N", conflicts_with_all = ["offline", "no_cache"])]
+    pub shard: Option<String>,
+    /// Assemble from the cache alone, never solving: a case without an entry is an error
+    /// that lists every missing case (after `repro cache merge` of a sharded run). Ignores
+    /// the Slurm array variables.
+    #[arg(long, conflicts_with = "no_cache")]
+    pub offline: bool,
     /// No progress on stderr.
     #[arg(long, short)]
     pub quiet: bool,

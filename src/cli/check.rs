@@ -31,6 +31,8 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
         out: work.join("out"),
         cache: work.join("cache"),
         no_cache: false,
+        shard: None,
+        offline: false,
         quiet: args.quiet,
     };
     // Failed cases are part of the baselines, not news: no warnings.

@@ -210,16 +210,19 @@ impl SolveArgs {
 }
 
 /// Where and how targets are built, from the target flags; `progress` and `warn` hear of the
-/// run.
+/// run. The output folder is checked when the run `writes_outputs` (a shard writes none).
 pub fn context<'a>(
     args: &TargetArgs,
+    writes_outputs: bool,
     progress: &'a (dyn Fn(&str, RunProgress) + Sync),
     warn: &'a (dyn Fn(String) + Sync),
 ) -> Result<Context<'a>> {
     if let Some(l) = args.level {
         check_level("--level", l)?;
     }
-    check_writable(&args.out).map_err(|e| anyhow!("--out: {e}"))?;
+    if writes_outputs {
+        check_writable(&args.out).map_err(|e| anyhow!("--out: {e}"))?;
+    }
     Ok(Context {
         out: args.out.clone(),
         cache: (!args.no_cache).then(|| Cache::new(&args.cache)),
@@ -227,5 +230,6 @@ pub fn context<'a>(
         progress,
         warn,
         stride: 1,
+        offline: args.offline,
     })
 }

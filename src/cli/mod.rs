@@ -6,10 +6,13 @@
 
 pub mod accuracy;
 pub mod args;
+pub mod cache;
 pub mod check;
 pub mod config;
 pub mod predict;
 pub mod print;
 pub mod progress;
+pub mod shard;
+pub mod slurm;
 pub mod solve;
 pub mod target;

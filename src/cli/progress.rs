@@ -19,6 +19,16 @@ pub fn in_context<T>(
     warnings: bool,
     f: impl FnOnce(&mut Context) -> Result<T>,
 ) -> Result<T> {
+    in_context_writing(args, true, warnings, f)
+}
+
+/// [`in_context`], the output folder checked only when the run `writes_outputs`.
+pub fn in_context_writing<T>(
+    args: &TargetArgs,
+    writes_outputs: bool,
+    warnings: bool,
+    f: impl FnOnce(&mut Context) -> Result<T>,
+) -> Result<T> {
     let shown = Progress::new(args.quiet);
     let progress = |name: &str, p: RunProgress| shown.case_done(name, p);
     let warn = |w: String| {
@@ -26,7 +36,7 @@ pub fn in_context<T>(
             shown.warn(&w)
         }
     };
-    let mut ctx = context(args, &progress, &warn)?;
+    let mut ctx = context(args, writes_outputs, &progress, &warn)?;
     f(&mut ctx)
 }
 

@@ -5,12 +5,32 @@ use super::args::{RunArgs, Table4Args, TargetArgs};
 use super::config::check_level;
 use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
+use super::shard::{self, TargetJobs};
 use anyhow::{anyhow, Context as _, Result};
 use repro::artefacts::csv::write_atomic;
 use repro::artefacts::sweep::Sweep;
 use repro::artefacts::table4;
+use repro::artefacts::target::Context;
 use repro::artefacts::{report, targets};
 use std::time::Instant;
+
+/// Every solve of the targets `names` in the context, with its target.
+fn target_jobs(names: &[&str], ctx: &Context) -> Result<TargetJobs> {
+    let mut out = Vec::new();
+    for n in names {
+        let jobs = targets::jobs(n, ctx).map_err(anyhow::Error::msg)?;
+        out.extend(jobs.into_iter().map(|j| (n.to_string(), j)));
+    }
+    Ok(out)
+}
+
+/// Before an offline build: every case of `names` must be in the cache.
+fn check_offline(names: &[&str], ctx: &Context) -> Result<()> {
+    if ctx.offline {
+        shard::check_offline(ctx, &target_jobs(names, ctx)?)?;
+    }
+    Ok(())
+}
 
 /// `repro list`: one line per target.
 pub fn list() -> Result<bool> {
@@ -26,7 +46,11 @@ pub fn list() -> Result<bool> {
 
 /// `repro <target>`.
 pub fn one(name: &str, args: &TargetArgs) -> Result<bool> {
+    if let Some(s) = shard::detect(args)? {
+        return shard::run(args, s, |ctx| target_jobs(&[name], ctx));
+    }
     let built = in_context(args, true, |ctx| {
+        check_offline(&[name], ctx)?;
         targets::build(name, ctx).map_err(anyhow::Error::msg)
     })?;
     println!("{}", summary_line(&built));
@@ -36,7 +60,11 @@ pub fn one(name: &str, args: &TargetArgs) -> Result<bool> {
 /// `repro all`: every target, then `summary.csv` and `index.html`.
 pub fn all(args: &TargetArgs) -> Result<bool> {
     let names: Vec<&str> = targets::TARGETS.iter().map(|t| t.name).collect();
+    if let Some(s) = shard::detect(args)? {
+        return shard::run(args, s, |ctx| target_jobs(&names, ctx));
+    }
     let built = in_context(args, true, |ctx| {
+        check_offline(&names, ctx)?;
         report::build_all(&names, ctx).map_err(anyhow::Error::msg)
     })?;
     for b in &built {
@@ -54,8 +82,19 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "study".into());
+    let study_jobs = |ctx: &Context| -> Result<TargetJobs> {
+        let jobs = targets::figure::study_jobs(&sweep, None, ctx)
+            .map_err(|e| anyhow!("{}: {e}", args.file.display()))?;
+        Ok(jobs.into_iter().map(|j| (stem.clone(), j)).collect())
+    };
+    if let Some(s) = shard::detect(&args.target)? {
+        return shard::run(&args.target, s, study_jobs);
+    }
     let t = Instant::now();
     let mut built = in_context(&args.target, true, |ctx| {
+        if ctx.offline {
+            shard::check_offline(ctx, &study_jobs(ctx)?)?;
+        }
         targets::figure::study(&stem, &sweep, ctx)
             .map_err(|e| anyhow!("{}: {e}", args.file.display()))
     })?;
@@ -76,13 +115,11 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
         None => spec.levels.clone(),
     };
     let mut printer = solve_progress(args.quiet);
-    // `repro table4` measures: it always solves (the `table4` target takes the cache).
-    let rows = table4::compute(&spec, &levels, None, |p| printer(p), &|w| eprintln!("{w}"))
-        .map_err(anyhow::Error::msg)?;
+    let rows = table4::compute(&spec, &levels, |p| printer(p)).map_err(anyhow::Error::msg)?;
     let path = args.out.join("table4.csv");
     write_atomic(&path, &table4::to_csv(&rows))
         .with_context(|| format!("--out: cannot write {}", path.display()))?;
     print!("{}", table4::to_text(&rows));
     println!("wrote {}", path.display());
-    Ok(rows.iter().all(|r| r.solved().is_some()))
+    Ok(rows.iter().all(|r| r.outcome.record().is_some()))
 }

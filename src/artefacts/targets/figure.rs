@@ -3,13 +3,16 @@
 
 use crate::artefacts::csv::{num, opt, table};
 use crate::artefacts::fit::{fit, mastercurve, FIT_TAU_C_MIN, PAPER_C};
-use crate::artefacts::line_cases;
+use crate::artefacts::line_cases::{self, LineRun};
 use crate::artefacts::plot::{scatter, Marker, Series};
-use crate::artefacts::run::{run_cases, CaseRun, Outcome, RunProgress};
+use crate::artefacts::provenance::{Provenance, SUFFIX};
+use crate::artefacts::run::{
+    point_jobs, run_cases, CaseRun, Job, Outcome, RunProgress, LINE_SOLVER_REVISION,
+};
 use crate::artefacts::sweep::{shipped_sweep, Sweep};
 use crate::artefacts::target::{write, Built, Context, LINE_LEVEL, SAMPLED_ABOVE, WORKING_LEVEL};
-use crate::physics::case::{LubricantSpec, Spec};
-use crate::solver::point::Params;
+use crate::physics::case::{Case, LubricantSpec, Spec};
+use crate::solver::point::{Params, SOLVER_REVISION};
 
 /// Which sweep a figure draws, and what it plots.
 struct FigureSpec {
@@ -41,28 +44,117 @@ fn figure_spec(name: &str) -> FigureSpec {
     }
 }
 
-/// Runs a sweep at the context's level, else the sweep's own, else the target's
+/// The cases of a sweep that a context runs (a sample of the large sweeps at the snapshot
+/// profile) and their level: the context's, else the sweep's own, else the target's
 /// `default_level`, else the working level.
+fn selection(sweep: &Sweep, default_level: Option<u32>, ctx: &Context) -> (Vec<Case>, u32) {
+    let level = ctx
+        .level
+        .or(sweep.level)
+        .or(default_level)
+        .unwrap_or(WORKING_LEVEL);
+    let cases: Vec<_> = if ctx.stride > 1 && sweep.cases.len() > SAMPLED_ABOVE {
+        sweep.cases.iter().step_by(ctx.stride).cloned().collect()
+    } else {
+        sweep.cases.clone()
+    };
+    (cases, level)
+}
+
+/// Runs a sweep's cases of the context (see [`selection`]) through its store.
 pub fn run_sweep(
     label: &str,
     sweep: &Sweep,
     default_level: Option<u32>,
     ctx: &Context,
 ) -> Result<(Vec<CaseRun>, u32), String> {
-    let level = ctx
-        .level
-        .or(sweep.level)
-        .or(default_level)
-        .unwrap_or(WORKING_LEVEL);
-    let params = Params::at_level(level);
+    let (cases, level) = selection(sweep, default_level, ctx);
     let progress = |p: RunProgress| (ctx.progress)(label, p);
-    let cases: Vec<_> = if ctx.stride > 1 && sweep.cases.len() > SAMPLED_ABOVE {
-        sweep.cases.iter().step_by(ctx.stride).cloned().collect()
-    } else {
-        sweep.cases.clone()
-    };
-    let runs = run_cases(&cases, &params, ctx.cache.as_ref(), &progress, ctx.warn)?;
+    let runs = run_cases(
+        label,
+        &cases,
+        &Params::at_level(level),
+        ctx.store(),
+        &progress,
+        ctx.warn,
+    )?;
     Ok((runs, level))
+}
+
+/// Every solve figure `name` needs in the context (what a shard divides and `--offline`
+/// looks up): its sweep's cases, and for Fig. 7 the line contacts.
+pub fn jobs(name: &str, default_level: Option<u32>, ctx: &Context) -> Result<Vec<Job>, String> {
+    let spec = figure_spec(name);
+    let sweep = shipped_sweep(spec.sweep).map_err(|e| e.to_string())?;
+    let mut jobs = study_jobs(&sweep, default_level, ctx)?;
+    if name == "fig7" {
+        jobs.extend(
+            line_cases::table3_jobs(LINE_LEVEL)?
+                .into_iter()
+                .map(|(j, _, _)| j),
+        );
+    }
+    Ok(jobs)
+}
+
+/// Every solve of a sweep in the context (a study of `repro run`, or a figure's sweep).
+pub fn study_jobs(
+    sweep: &Sweep,
+    default_level: Option<u32>,
+    ctx: &Context,
+) -> Result<Vec<Job>, String> {
+    let (cases, level) = selection(sweep, default_level, ctx);
+    Ok(point_jobs(&cases, &Params::at_level(level))?
+        .into_iter()
+        .map(|(j, _)| j)
+        .collect())
+}
+
+/// The sidecar of a sweep figure: its point cases (and Fig. 7's line contacts).
+fn provenance(stem: &str, built: &Built, runs: &[CaseRun], line: Option<&[LineRun]>) -> Provenance {
+    let files: Vec<String> = built
+        .files
+        .iter()
+        .filter(|f| !f.ends_with(SUFFIX))
+        .cloned()
+        .collect();
+    let mut p = Provenance::new(stem, &files);
+    p.solver_revision = Some(SOLVER_REVISION.to_string());
+    p.level = built.level;
+    if let Some(level) = built.level {
+        p.params.push(format!("{:?}", Params::at_level(level)));
+    }
+    p.add_rows(
+        &format!("{stem}.csv"),
+        runs.iter().map(|r| (r.key.as_str(), r.stamp.as_ref())),
+    );
+    if let Some(line) = line {
+        p.line_solver_revision = Some(LINE_SOLVER_REVISION.to_string());
+        p.params.push(format!(
+            "{:?}",
+            crate::solver::line::Params::at_level(LINE_LEVEL)
+        ));
+        p.add_rows(
+            "fig7-line.csv",
+            line.iter().map(|r| (r.key.as_str(), r.stamp.as_ref())),
+        );
+    }
+    p
+}
+
+/// Writes the sidecar of a sweep figure and lists it among the built files.
+fn write_provenance(
+    stem: &str,
+    built: &mut Built,
+    runs: &[CaseRun],
+    line: Option<&[LineRun]>,
+    ctx: &Context,
+) -> Result<(), String> {
+    let text = provenance(stem, built, runs, line).to_json();
+    built
+        .files
+        .push(write(ctx, &format!("{stem}{SUFFIX}"), &text)?);
+    Ok(())
 }
 
 /// The x and y of a case on a figure.
@@ -120,8 +212,6 @@ pub fn runs_csv(
         "cycles",
         "newton_steps",
         "residual",
-        "seconds",
-        "cached",
         "status",
     ];
     let rows: Vec<Vec<String>> = runs
@@ -173,7 +263,6 @@ pub fn runs_csv(
                         rec.cycles.to_string(),
                         rec.newton_steps.to_string(),
                         num(rec.residual),
-                        format!("{:.3}", rec.seconds),
                     ],
                     "solved".to_string(),
                 ),
@@ -181,7 +270,7 @@ pub fn runs_csv(
                     residual_history, ..
                 } => {
                     // Cycles and Newton steps are not told apart in a failure's history.
-                    let mut cells = vec![String::new(); 14];
+                    let mut cells = vec![String::new(); 13];
                     cells[10] = residual_history.len().to_string();
                     cells[12] = opt(residual_history.last().copied());
                     let kind = r.failure_kind().unwrap_or("failed");
@@ -208,7 +297,6 @@ pub fn runs_csv(
                 num(eq13),
             ];
             row.extend(rec_cells);
-            row.push(r.cached.to_string());
             row.push(status);
             row
         })
@@ -231,7 +319,8 @@ pub fn build(
     };
     // Fig. 7 adds the Table 3 line contacts, solved by the 1-D solver at its working level.
     let (line, extra) = if name == "fig7" {
-        let runs = line_cases::solve_table3(LINE_LEVEL)?;
+        let progress = |p: RunProgress| (ctx.progress)("fig7-line", p);
+        let runs = line_cases::solve_table3(name, LINE_LEVEL, ctx.store(), &progress, ctx.warn)?;
         let series = Series {
             label: "line contact".into(),
             points: line_cases::line_points(&runs),
@@ -247,9 +336,12 @@ pub fn build(
         let csv = line_cases::line_csv(line, LINE_LEVEL);
         built.files.push(write(ctx, "fig7-line.csv", &csv)?);
         built.cases += line.len();
-        let solved = line.iter().filter(|r| r.outcome.is_ok()).count();
+        let solved = line.iter().filter(|r| r.outcome.record().is_some()).count();
         built.solved = built.solved.map(|s| s + solved);
+        let cached = line.iter().filter(|r| r.cached).count();
+        built.cached = built.cached.map(|c| c + cached);
     }
+    write_provenance(name, &mut built, &runs, line.as_deref(), ctx)?;
     built.name = name;
     built.paper_claim = claim.to_string();
     if spec.severity {
@@ -291,7 +383,8 @@ pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<Built, String> 
         total: false,
         severity: false,
     };
-    let (mut built, _) = sweep_figure(stem, sweep, &spec, None, ctx, &[])?;
+    let (mut built, runs) = sweep_figure(stem, sweep, &spec, None, ctx, &[])?;
+    write_provenance(stem, &mut built, &runs, None, ctx)?;
     built.paper_claim = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)".into();
     Ok(built)
 }

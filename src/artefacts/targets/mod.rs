@@ -6,7 +6,9 @@ pub mod fig8;
 pub mod figure;
 pub mod tables;
 
-use super::target::{Built, Context};
+use super::provenance::{Provenance, SUFFIX};
+use super::run::Job;
+use super::target::{write, Built, Context};
 use std::time::Instant;
 
 /// What a target is.
@@ -55,16 +57,29 @@ pub fn target(name: &str) -> Option<&'static Target> {
     TARGETS.iter().find(|t| t.name == name)
 }
 
-/// Builds one target.
+/// Looks a target up, or says which targets there are.
+fn known(name: &str) -> Result<&'static Target, String> {
+    target(name).ok_or_else(|| {
+        let known: Vec<&str> = TARGETS.iter().map(|t| t.name).collect();
+        format!("unknown target '{name}' (known: {})", known.join(", "))
+    })
+}
+
+/// Every solve target `name` needs in the context, as jobs (none for the emitted tables and
+/// Fig. 8): what a shard divides and what `--offline` must find in the cache.
+pub fn jobs(name: &str, ctx: &Context) -> Result<Vec<Job>, String> {
+    let t = known(name)?;
+    match t.name {
+        "table1" | "table2" | "table3" | "fig8" => Ok(Vec::new()),
+        "table4" => tables::table4_jobs(),
+        figure_name => figure::jobs(figure_name, t.default_level, ctx),
+    }
+}
+
+/// Builds one target (and its provenance sidecar, for the targets that solve nothing).
 pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
     let start = Instant::now();
-    let Some(t) = target(name) else {
-        let known: Vec<&str> = TARGETS.iter().map(|t| t.name).collect();
-        return Err(format!(
-            "unknown target '{name}' (known: {})",
-            known.join(", ")
-        ));
-    };
+    let t = known(name)?;
     let mut built = match t.name {
         "table1" => tables::table1(ctx)?,
         "table2" => tables::table2(ctx)?,
@@ -73,6 +88,12 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "fig8" => fig8::build(ctx)?,
         figure_name => figure::build(figure_name, t.default_level, ctx)?,
     };
+    if !built.files.iter().any(|f| f.ends_with(SUFFIX)) {
+        let sidecar = Provenance::new(name, &built.files).to_json();
+        built
+            .files
+            .push(write(ctx, &format!("{name}{SUFFIX}"), &sidecar)?);
+    }
     built.seconds = start.elapsed().as_secs_f64();
     Ok(built)
 }

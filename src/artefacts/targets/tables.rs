@@ -2,10 +2,12 @@
 //! Table 4, the grid convergence of the Appendix case at its own levels.
 
 use crate::artefacts::csv::{num, table};
+use crate::artefacts::provenance::{Provenance, SUFFIX};
 use crate::artefacts::sweep::shipped_sweep;
 use crate::artefacts::target::{write, Built, Context};
 use crate::physics::case::{LubricantSpec, Spec};
 use crate::physics::lubricant::LubricantTable;
+use crate::solver::point::SOLVER_REVISION;
 
 fn emitted(
     name: &'static str,
@@ -204,20 +206,42 @@ pub(super) fn table3(ctx: &Context) -> Result<Built, String> {
     ))
 }
 
+/// The solves of Table 4: the Appendix case at its own levels.
+pub(super) fn table4_jobs() -> Result<Vec<crate::artefacts::run::Job>, String> {
+    let spec = crate::artefacts::table4::Table4Case::shipped()?;
+    crate::artefacts::table4::jobs(&spec, &spec.levels)
+}
+
 pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
     use crate::artefacts::table4 as t4;
     let spec = t4::Table4Case::shipped()?;
     // A grid-convergence table: always its own levels (cases/table4.toml), whatever level
     // the other targets are built at.
     let levels = spec.levels.clone();
-    let rows = t4::compute(&spec, &levels, ctx.cache.as_ref(), |_| {}, ctx.warn)?;
-    let csv = write(ctx, "table4.csv", &t4::to_csv(&rows))?;
-    let solved = rows.iter().filter(|r| r.solved().is_some()).count();
-    let cached = rows.iter().filter(|r| r.cached).count();
+    let progress = |p| (ctx.progress)("table4", p);
+    let stored = t4::compute_stored(&spec, &levels, ctx.store(), &progress, ctx.warn)?;
+    let rows = &stored.rows;
+    let csv = write(ctx, "table4.csv", &t4::to_csv(rows))?;
+    let mut sidecar = Provenance::new("table4", std::slice::from_ref(&csv));
+    sidecar.solver_revision = Some(SOLVER_REVISION.to_string());
+    sidecar.params = levels
+        .iter()
+        .map(|&l| format!("{:?}", t4::params(l)))
+        .collect();
+    sidecar.add_rows(
+        &csv,
+        stored
+            .keys
+            .iter()
+            .map(String::as_str)
+            .zip(stored.stamps.iter().map(Option::as_ref)),
+    );
+    let sidecar = write(ctx, &format!("table4{SUFFIX}"), &sidecar.to_json())?;
+    let solved = rows.iter().filter(|r| r.outcome.record().is_some()).count();
     let ours = rows
         .iter()
         .filter_map(|r| {
-            r.solved().map(|s| {
+            r.outcome.record().map(|s| {
                 format!(
                     "level {}: Hc {:.4e}, mu-bar {:.2}",
                     r.level, s.h_central, s.mu_bar_sliding
@@ -227,7 +251,7 @@ pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
         .collect::<Vec<_>>()
         .join("; ")
         + "; "
-        + t4::mastercurve_note(&rows).trim_end();
+        + t4::mastercurve_note(rows).trim_end();
     let claim = t4::PAPER
         .iter()
         .map(|p| format!("level {}: Hc {:.4e}, mu-bar {:.2}", p.0, p.1, p.2))
@@ -238,12 +262,12 @@ pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
         title: "Table 4: grid convergence of the Appendix case".into(),
         cases: rows.len(),
         solved: Some(solved),
-        cached: Some(cached),
+        cached: Some(stored.cached),
         level: levels.iter().max().copied(),
         fit: None,
         fit_all: None,
         seconds: 0.0,
-        files: vec![csv],
+        files: vec![csv, sidecar],
         paper_claim: claim,
         ours,
     })
