@@ -89,7 +89,7 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
     let x_axis = plan_axis("x", fig.x_scale, fig.x_range, &xs)?;
     let y_axis = plan_axis("y", fig.y_scale, fig.y_range, &ys)?;
 
-    let (visible, visible_labels): (Vec<Vec<(f64, f64)>>, Vec<Vec<String>>) = prepared
+    let (visible, visible_labels): (Vec<Vec<_>>, Vec<Vec<String>>) = prepared
         .series
         .iter()
         .zip(&prepared.labels)
