@@ -3,6 +3,7 @@
 
 use super::csv::{num, table};
 use super::fit::{mastercurve, PAPER_C};
+use super::oracle::line_flat;
 use super::sweep::shipped_sweep;
 use crate::physics::case::{Physics, Spec};
 use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
@@ -84,7 +85,9 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
         "hc_moes",
         "hmin_moes",
         "mu_bar_sliding",
+        "mu_bar_flat",
         "rel_dev_eq13",
+        "rel_dev_flat",
         "cycles",
         "seconds",
         "status",
@@ -111,18 +114,23 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                 num(eq13),
             ];
             match &r.outcome {
-                Ok(s) => row.extend([
-                    num(s.film.h_central),
-                    num(s.film.hc_moes),
-                    num(s.film.hmin_moes),
-                    num(s.friction.sliding),
-                    num(s.friction.sliding / eq13 - 1.0),
-                    s.info.cycles.to_string(),
-                    format!("{:.3}", s.info.seconds),
-                    "solved".into(),
-                ]),
+                Ok(s) => {
+                    let flat = line_flat(&r.problem, s.film.h_central);
+                    row.extend([
+                        num(s.film.h_central),
+                        num(s.film.hc_moes),
+                        num(s.film.hmin_moes),
+                        num(s.friction.sliding),
+                        num(flat),
+                        num(s.friction.sliding / eq13 - 1.0),
+                        num(s.friction.sliding / flat - 1.0),
+                        s.info.cycles.to_string(),
+                        format!("{:.3}", s.info.seconds),
+                        "solved".into(),
+                    ])
+                }
                 Err(e) => {
-                    row.extend(std::iter::repeat_n(String::new(), 7));
+                    row.extend(std::iter::repeat_n(String::new(), 9));
                     row.push(format!("failed: {}", super::run::failure_kind(e)));
                 }
             }

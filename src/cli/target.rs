@@ -14,12 +14,17 @@ use std::time::Instant;
 
 /// `repro list`: one line per target.
 pub fn list() -> Result<bool> {
+    let width = targets::TARGETS
+        .iter()
+        .map(|t| t.name.len())
+        .max()
+        .unwrap_or(0);
     for t in targets::TARGETS {
         let level = t
             .default_level
             .map(|l| format!("[level {l}]"))
             .unwrap_or_default();
-        println!("{:<8} {:<10} {}", t.name, level, t.description);
+        println!("{:<width$} {:<10} {}", t.name, level, t.description);
     }
     Ok(true)
 }

@@ -4,6 +4,7 @@
 
 pub mod fig8;
 pub mod figure;
+pub mod mastercurve;
 pub mod tables;
 
 use super::target::{Built, Context};
@@ -48,6 +49,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
     Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed, default_level: Some(7) },
     Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
+    Target { name: "mastercurve", description: "Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on a refined formula fitted to them, cross-validated by figure", kind: Kind::Computed, default_level: None },
 ];
 
 /// Looks a target up.
@@ -71,6 +73,7 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "table3" => tables::table3(ctx)?,
         "table4" => tables::table4(ctx)?,
         "fig8" => fig8::build(ctx)?,
+        "mastercurve" => mastercurve::build(ctx)?,
         figure_name => figure::build(figure_name, t.default_level, ctx)?,
     };
     built.seconds = start.elapsed().as_secs_f64();

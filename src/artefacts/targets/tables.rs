@@ -27,6 +27,7 @@ fn emitted(
         files,
         paper_claim: claim.to_string(),
         ours: "emitted from cases/".to_string(),
+        refined: Vec::new(),
     }
 }
 
@@ -245,5 +246,6 @@ pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
         files: vec![csv],
         paper_claim: claim,
         ours,
+        refined: Vec::new(),
     })
 }
