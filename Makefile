@@ -11,7 +11,8 @@ build:
 test:
 	$(CARGO) test --release --all-targets
 
-# Regenerate the paper: Tables 1-4, Figs. 1-7, figures/summary.csv and figures/index.html
+# Regenerate the paper: Tables 1-4, Figs. 1-8, the mastercurve target (beyond the paper),
+# figures/summary.csv and figures/index.html
 # at the working level (LEVEL, default 7). Solved cases are cached in .repro-cache/.
 figures: build
 	./target/release/repro all --level $(LEVEL)

@@ -4,6 +4,7 @@
 use super::cache::Stamp;
 use super::csv::{num, table};
 use super::fit::{mastercurve, PAPER_C};
+use super::oracle::line_flat;
 use super::run::{line_key, run_jobs, Job, Outcome, RunProgress, Store, Work};
 use super::sweep::shipped_sweep;
 use crate::physics::case::{Physics, Spec};
@@ -129,7 +130,9 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
         "hc_moes",
         "hmin_moes",
         "mu_bar_sliding",
+        "mu_bar_flat",
         "rel_dev_eq13",
+        "rel_dev_flat",
         "cycles",
         "status",
     ];
@@ -155,17 +158,22 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                 num(eq13),
             ];
             match &r.outcome {
-                Outcome::Solved(s) => row.extend([
-                    num(s.h_central),
-                    num(s.hc_moes),
-                    num(s.hmin_moes),
-                    num(s.mu_bar_sliding),
-                    num(s.mu_bar_sliding / eq13 - 1.0),
-                    s.cycles.to_string(),
-                    "solved".into(),
-                ]),
+                Outcome::Solved(s) => {
+                    let flat = line_flat(&r.problem, s.h_central);
+                    row.extend([
+                        num(s.h_central),
+                        num(s.hc_moes),
+                        num(s.hmin_moes),
+                        num(s.mu_bar_sliding),
+                        num(flat),
+                        num(s.mu_bar_sliding / eq13 - 1.0),
+                        num(s.mu_bar_sliding / flat - 1.0),
+                        s.cycles.to_string(),
+                        "solved".into(),
+                    ])
+                }
                 Outcome::Failed { .. } => {
-                    row.extend(std::iter::repeat_n(String::new(), 6));
+                    row.extend(std::iter::repeat_n(String::new(), 8));
                     row.push(format!(
                         "failed: {}",
                         r.outcome.failure_kind().unwrap_or("failed")

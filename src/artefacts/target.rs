@@ -5,6 +5,7 @@
 use super::cache::Cache;
 use super::csv::write_atomic;
 use super::fit::Fit;
+use super::refined::FigureCheck;
 use super::run::{RunProgress, Store};
 use std::path::{Path, PathBuf};
 
@@ -75,6 +76,8 @@ pub struct Built {
     pub paper_claim: String,
     /// Ours, for the report.
     pub ours: String,
+    /// The refined formula's cross-validation, by figure (the `mastercurve` target).
+    pub refined: Vec<FigureCheck>,
 }
 
 /// Writes `text` to the file `name` of the output folder (atomically); returns `name`.

@@ -10,6 +10,7 @@ use super::print::{print_failure, rolling_text, solve_progress};
 use super::solve::point_report;
 use anyhow::{bail, Result};
 use repro::artefacts::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
+use repro::artefacts::refined::{Features, REFINED, REFINED_BAND};
 use repro::physics::case::{Case, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::traction::{
@@ -79,22 +80,25 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     let mu = c.friction(mu_bar, tau0);
     let compute_seconds = start.elapsed().as_secs_f64();
 
+    // The refined formula needs the contact's Hertz scales and viscosity law: its problem.
+    let case = Case {
+        spec: Spec::Physical(PhysicalCase {
+            lubricant,
+            ph_pa: c.ph_pa,
+            um_m_s: um,
+            slip,
+            tau0_pa: tau0,
+            rx_m: args.rx,
+            ry_m: ry,
+            e_prime_pa: args.e_prime,
+        }),
+        physics,
+    };
+    let problem = Problem::from_case(&case, &lubs).map_err(flag_error)?;
+    let refined = Prediction::of(&problem, tau0, &c);
+
     let warns = warnings(&c);
     let solved = if args.solve {
-        let case = Case {
-            spec: Spec::Physical(PhysicalCase {
-                lubricant,
-                ph_pa: c.ph_pa,
-                um_m_s: um,
-                slip,
-                tau0_pa: tau0,
-                rx_m: args.rx,
-                ry_m: ry,
-                e_prime_pa: args.e_prime,
-            }),
-            physics,
-        };
-        let problem = Problem::from_case(&case, &lubs).map_err(flag_error)?;
         let params = Params::at_level(level);
         let mut printer = solve_progress(args.quiet || args.json);
         match solve_point(&problem, &params, Some(&mut printer)) {
@@ -118,12 +122,18 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
             json!({
                 "mu_bar": mu_bar - s.friction.sliding,
                 "relative": mu_bar / s.friction.sliding - 1.0,
+                "mu_bar_refined": refined.mu_bar - s.friction.sliding,
+                "relative_refined": refined.mu_bar / s.friction.sliding - 1.0,
             })
         });
         let out = json!({
             "ph_pa": c.ph_pa, "m": c.m, "l": c.l, "s_bar": c.s_bar, "slip": c.slip,
             "tau0_pa": tau0, "eta_bar_ph": c.eta_bar_ph, "hc_eq10": c.hc_moes, "hc_m": c.hc_m,
             "tau_c": c.tau_c, "mu_bar": mu_bar, "mu": mu,
+            "mu_bar_source": "Eq. (14) of the paper, mu-bar = asinh(tau_c / 5)",
+            "mu_bar_refined": refined.mu_bar, "mu_refined": refined.mu,
+            "mu_bar_refined_band": [refined.low, refined.high],
+            "mu_bar_refined_source": "refined formula (beyond the paper; repro mastercurve), band: 95 % of cross-validated residuals",
             "compute_seconds": compute_seconds,
             "warnings": warns,
             "solve": solve,
@@ -137,6 +147,7 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
                 &c,
                 mu_bar,
                 mu,
+                &refined,
                 compute_seconds,
                 tau0,
                 solved.as_ref().map(|(_, s)| s)
@@ -149,10 +160,31 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     Ok(true)
 }
 
+/// The refined formula's friction of a contact, with its band.
+struct Prediction {
+    mu_bar: f64,
+    mu: f64,
+    low: f64,
+    high: f64,
+}
+
+impl Prediction {
+    fn of(problem: &Problem, tau0: f64, c: &Characteristic) -> Self {
+        let mu_bar = REFINED.predict(&Features::point(problem));
+        Prediction {
+            mu_bar,
+            mu: c.friction(mu_bar, tau0),
+            low: mu_bar * (1.0 - REFINED_BAND),
+            high: mu_bar * (1.0 + REFINED_BAND),
+        }
+    }
+}
+
 fn text(
     c: &Characteristic,
     mu_bar: f64,
     mu: f64,
+    refined: &Prediction,
     compute_seconds: f64,
     tau0: f64,
     solved: Option<&PointSolution>,
@@ -160,8 +192,9 @@ fn text(
     let mut out = format!(
         "contact     p_H = {:.4e} Pa, M = {:.4}, L = {:.4}, S-bar = {:.4e}, S = {}\n\
          tau_c       {:.4e}  (Eq. 12: eta(p_H)/eta0 = {:.4e}, Hc of Eq. 10 = {:.4} = {:.4e} m)\n\
-         mastercurve mu-bar = asinh(tau_c/5) = {:.4}  (Eq. 14, sliding friction)\n\
+         mastercurve mu-bar = asinh(tau_c/5) = {:.4}  (the paper's Eq. 14, sliding friction)\n\
          friction    mu = mu-bar tau0 / p_H = {:.5}\n\
+         refined     mu_bar_refined = {:.4} ({:.4} .. {:.4}), mu = {:.5}  (beyond the paper: flat-film formula fitted to Figs. 3-7, repro mastercurve; band holds 95 % of its cross-validated cases)\n\
          compute     {:.1} us\n",
         c.ph_pa,
         c.m,
@@ -174,13 +207,17 @@ fn text(
         c.hc_m,
         mu_bar,
         mu,
+        refined.mu_bar,
+        refined.low,
+        refined.high,
+        refined.mu,
         compute_seconds * 1e6,
     );
     if let Some(s) = solved {
         let solve_mu = c.friction(s.friction.sliding, tau0);
         out.push_str(&format!(
             "solve       {} x {}: mu-bar sliding = {:.4} (mu = {:.5}), rolling = {}, Hc = {:.4} (Moes), {} cycles, {:.2} s\n\
-             difference  mastercurve - solve: mu-bar {:+.4} ({:+.2} %), mu {:+.5}\n",
+             difference  mastercurve - solve: mu-bar {:+.4} ({:+.2} %), mu {:+.5}; refined - solve: mu-bar {:+.4} ({:+.2} %)\n",
             s.grid.nx,
             s.grid.ny,
             s.friction.sliding,
@@ -192,6 +229,8 @@ fn text(
             mu_bar - s.friction.sliding,
             100.0 * (mu_bar / s.friction.sliding - 1.0),
             mu - solve_mu,
+            refined.mu_bar - s.friction.sliding,
+            100.0 * (refined.mu_bar / s.friction.sliding - 1.0),
         ));
     }
     out

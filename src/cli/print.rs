@@ -104,11 +104,7 @@ pub fn summary_line(b: &Built) -> String {
     }
     line.push_str(&format!(", {:.1} s", b.seconds));
     if let Some(f) = b.fit {
-        line.push_str(&format!(
-            ", fitted c = {:.2} (RMS deviation from Eq. 13 {:.1} %)",
-            f.c,
-            100.0 * f.rms_rel_dev
-        ));
+        line.push_str(&format!(", {}", f.describe()));
     }
     if b.name == "fig1" {
         line.push_str(&format!(" ({})", b.ours));

@@ -34,12 +34,17 @@ fn check_offline(names: &[&str], ctx: &Context) -> Result<()> {
 
 /// `repro list`: one line per target.
 pub fn list() -> Result<bool> {
+    let width = targets::TARGETS
+        .iter()
+        .map(|t| t.name.len())
+        .max()
+        .unwrap_or(0);
     for t in targets::TARGETS {
         let level = t
             .default_level
             .map(|l| format!("[level {l}]"))
             .unwrap_or_default();
-        println!("{:<8} {:<10} {}", t.name, level, t.description);
+        println!("{:<width$} {:<10} {}", t.name, level, t.description);
     }
     Ok(true)
 }

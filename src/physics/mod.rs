@@ -5,6 +5,7 @@ pub mod case;
 pub mod density;
 pub mod evaluations;
 pub mod film;
+pub mod flat_film;
 pub mod hertz;
 pub mod line_contact;
 pub mod lubricant;

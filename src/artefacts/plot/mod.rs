@@ -43,13 +43,14 @@ mod layout;
 mod legend;
 mod marker;
 pub mod measured;
+pub mod panels;
 pub mod scatter;
 mod style;
 mod text;
 
 pub use curve::mastercurve;
 pub use draw::{render, render_svg};
-pub use text::text_width;
+pub use text::{significant, text_width};
 
 /// Canvas width in pixels.
 pub const WIDTH: u32 = 800;

@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 /// Formats `v` with `digits` significant digits, without trailing zeros ("4.93", "5", "0.012").
-pub(super) fn significant(v: f64, digits: i32) -> String {
+pub fn significant(v: f64, digits: i32) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
     }

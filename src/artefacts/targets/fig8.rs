@@ -121,11 +121,9 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
     } else {
         let dev = match fit_range {
             Some(f) => format!(
-                "c = {:.2} over {} points with tau_c >= {FIT_TAU_C_MIN} (RMS deviation from Eq. 13 {:.1} %, largest {:.1} %)",
-                f.c,
+                "{} points with tau_c >= {FIT_TAU_C_MIN}: {}",
                 f.points,
-                100.0 * f.rms_rel_dev,
-                100.0 * f.max_rel_dev
+                f.describe()
             ),
             None => format!("no point with tau_c >= {FIT_TAU_C_MIN}"),
         };
@@ -149,5 +147,6 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
         files: vec![csv, picture],
         paper_claim: "measured two-disc friction (Evans and Johnson; Klein-Meuleman, Lubrecht and ten Napel) falls rather closely on Eq. (13)".into(),
         ours,
+        refined: Vec::new(),
     })
 }

@@ -4,6 +4,7 @@
 
 pub mod fig8;
 pub mod figure;
+pub mod mastercurve;
 pub mod tables;
 
 use super::provenance::{Provenance, SUFFIX};
@@ -50,6 +51,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig6", description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)", kind: Kind::Computed, default_level: Some(6) },
     Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed, default_level: Some(7) },
     Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
+    Target { name: "mastercurve", description: "Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on a refined formula fitted to them, cross-validated by figure", kind: Kind::Computed, default_level: None },
 ];
 
 /// Looks a target up.
@@ -72,6 +74,18 @@ pub fn jobs(name: &str, ctx: &Context) -> Result<Vec<Job>, String> {
     match t.name {
         "table1" | "table2" | "table3" | "fig8" => Ok(Vec::new()),
         "table4" => tables::table4_jobs(),
+        "mastercurve" => {
+            // The figures' own cases, each solve once.
+            let mut all: Vec<Job> = Vec::new();
+            for (figure, _) in mastercurve::FIGURES {
+                for job in jobs(figure, ctx)? {
+                    if !all.iter().any(|j| j.key == job.key) {
+                        all.push(job);
+                    }
+                }
+            }
+            Ok(all)
+        }
         figure_name => figure::jobs(figure_name, t.default_level, ctx),
     }
 }
@@ -86,6 +100,7 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "table3" => tables::table3(ctx)?,
         "table4" => tables::table4(ctx)?,
         "fig8" => fig8::build(ctx)?,
+        "mastercurve" => mastercurve::build(ctx)?,
         figure_name => figure::build(figure_name, t.default_level, ctx)?,
     };
     if !built.files.iter().any(|f| f.ends_with(SUFFIX)) {

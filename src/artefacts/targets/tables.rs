@@ -29,6 +29,7 @@ fn emitted(
         files,
         paper_claim: claim.to_string(),
         ours: "emitted from cases/".to_string(),
+        refined: Vec::new(),
     }
 }
 
@@ -270,5 +271,6 @@ pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
         files: vec![csv, sidecar],
         paper_claim: claim,
         ours,
+        refined: Vec::new(),
     })
 }
