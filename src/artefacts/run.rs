@@ -360,10 +360,8 @@ pub fn run_jobs(
     runs.into_iter().collect()
 }
 
-/// The revision of the line-contact numerics, part of every line-contact cache key. It
-/// belongs beside [`SOLVER_REVISION`] in the solver (`src/solver/line`), where a change of
-/// the numerics would bump it; it lives here until the solver exports one.
-pub const LINE_SOLVER_REVISION: &str = "line-1";
+/// The revision of the line-contact numerics, part of every line-contact cache key.
+pub use crate::solver::line::SOLVER_REVISION as LINE_SOLVER_REVISION;
 
 /// The cache key of a line contact at the given solver parameters (the parameters a target
 /// can set and the revision, as [`case_key`]).

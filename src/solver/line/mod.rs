@@ -42,6 +42,10 @@ use crate::solver::output::{
 use level::{Level, Model, LOAD};
 use std::time::Instant;
 
+/// Revision of the line-contact numerics: part of every line-contact cache key, bumped
+/// whenever a change can move a result.
+pub const SOLVER_REVISION: &str = "line-1";
+
 /// Highest level the solver accepts (8192 intervals: a dense Jacobian of 0.5 GB).
 pub const MAX_LEVEL: u32 = 12;
 /// Lowest level the solver accepts as the finest.
