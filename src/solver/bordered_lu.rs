@@ -36,6 +36,7 @@ impl BorderedLu {
             return None;
         }
         let a = SparseColMat::<usize, f64>::try_new_from_triplets(n, n, entries).ok()?;
+        super::fix_factorisation_parallelism();
         let symbolic = SymbolicLu::try_new(a.symbolic()).ok()?;
         let lu = Lu::try_new_with_symbolic(symbolic, a.as_ref()).ok()?;
         let mut out = BorderedLu {

@@ -13,6 +13,7 @@ pub(crate) fn solve(a: &[f64], b: &mut [f64], n: usize) -> bool {
     if a.iter().any(|v| !v.is_finite()) {
         return false;
     }
+    super::fix_factorisation_parallelism();
     let lu = Mat::from_fn(n, n, |i, j| a[i * n + j]).partial_piv_lu();
     let x = lu.solve(Mat::from_fn(n, 1, |i, _| b[i]));
     for (i, v) in b.iter_mut().enumerate() {
