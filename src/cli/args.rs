@@ -48,6 +48,9 @@ pub enum Command {
     Fig7(TargetArgs),
     /// Fig. 8: measured friction (cases/fig8/*.csv) transformed by Sec. IV onto Eq. (13).
     Fig8(TargetArgs),
+    /// Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on the refined friction
+    /// formula fitted to them, cross-validated by figure.
+    Mastercurve(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
     Predict(Box<PredictArgs>),

@@ -76,10 +76,11 @@ pub fn jobs(name: &str, ctx: &Context) -> Result<Vec<Job>, String> {
         "table4" => tables::table4_jobs(),
         "mastercurve" => {
             // The figures' own cases, each solve once.
+            let mut seen = std::collections::HashSet::new();
             let mut all: Vec<Job> = Vec::new();
             for (figure, _) in mastercurve::FIGURES {
                 for job in jobs(figure, ctx)? {
-                    if !all.iter().any(|j| j.key == job.key) {
+                    if seen.insert(job.key.clone()) {
                         all.push(job);
                     }
                 }
