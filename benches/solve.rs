@@ -1,4 +1,5 @@
-//! Criterion benchmarks: the 5P4E hard case at level 7 (Newton-Krylov), one point-contact
+//! Criterion benchmarks: the speed cases (Table 4 at levels 6-8, the Newtonian M = 20, L = 10
+//! contact at 7 and 8), the 5P4E hard case at level 7 (Newton-Krylov), one point-contact
 //! solve per level for the cases of the accuracy study (`repro accuracy`), the cost of each
 //! optional physical effect on the Table 4 case, and one whole small target.
 //!
@@ -182,8 +183,60 @@ fn hard_case(c: &mut Criterion) {
     group.finish();
 }
 
+/// The speed targets of the solver: the Table 4 case at levels 6, 7 and 8 (Table 4's own
+/// parameters: the figures' defaults) and the Newtonian M = 20, L = 10 rolling contact
+/// (Barus, incompressible: the case of the Venner-Lubrecht FMG code) at levels 7 and 8.
+fn speed(c: &mut Criterion) {
+    let table4 = repro::artefacts::table4::Table4Case::shipped()
+        .expect("cases/table4.toml")
+        .problem()
+        .expect("the Table 4 case resolves");
+    let newtonian = Problem::from_case(
+        &Case {
+            spec: Spec::Dimensionless(repro::physics::case::DimensionlessCase {
+                m: 20.0,
+                l: 10.0,
+                s_bar: 0.0,
+                d: 1.0,
+                slip: 0.0,
+                eta0_pa_s: None,
+                ph_pa: None,
+            }),
+            physics: Physics {
+                viscosity: ViscosityLaw::Barus,
+                density: DensityLaw::Incompressible,
+                rheology: Rheology::Newtonian,
+            },
+        },
+        &LubricantTable::table1(),
+    )
+    .expect("valid case");
+    let runs: Vec<(&str, &Problem, u32)> = if full() {
+        vec![
+            ("table4", &table4, 6),
+            ("table4", &table4, 7),
+            ("table4", &table4, 8),
+            ("newtonian-m20-l10", &newtonian, 7),
+            ("newtonian-m20-l10", &newtonian, 8),
+        ]
+    } else {
+        vec![("table4", &table4, 5), ("newtonian-m20-l10", &newtonian, 5)]
+    };
+    let mut group = c.benchmark_group("speed");
+    group.sample_size(10);
+    group.measurement_time(Duration::from_secs(20));
+    for (name, problem, level) in runs {
+        let params = Params::at_level(level);
+        group.bench_with_input(BenchmarkId::new(name, level), &level, |b, _| {
+            b.iter(|| solve(problem, &params, None).expect("the speed cases converge"))
+        });
+    }
+    group.finish();
+}
+
 fn main() {
     let mut c = Criterion::default().configure_from_args();
+    speed(&mut c);
     hard_case(&mut c);
     levels(&mut c);
     effects(&mut c);

@@ -5,10 +5,10 @@
 //! Tolerances. Each case is solved serially, so a run gives the same bits whatever the thread
 //! count; what may differ between machines is the last bits of `exp`/`pow` in the host's libm.
 //! Such a perturbation moves a converged solution by about the solver's iteration error: the
-//! solve stops at a mean residual of 1e-6 or a mean pressure change of 3e-7 per cycle, with a
-//! convergence factor of at most about 0.7, which leaves an error of order 1e-6 in `P` and
-//! 1e-5 relative in the integrated outputs (film, friction). [`REL_TOL`] = 1e-4 is ten times
-//! that, and a 1 % change in any result is a hundred times it.
+//! point solver stops where the estimated algebraic error of the film and the friction is
+//! below 5e-4 relative (`solver::point::stopping`, a hundredth of level 7's discretisation
+//! error in the film), or earlier at a mean residual of 1e-6. [`REL_TOL`] = 2e-3 is four
+//! times that bound, and a 1 % change in any result is five times it.
 
 use super::csv::{reader, table, write_atomic};
 use std::fmt;
@@ -22,9 +22,11 @@ pub const PROFILE_LEVEL: u32 = 5;
 /// and 5-valued axes of the shipped grids, so the sample covers every value of every axis).
 pub const PROFILE_STRIDE: usize = 4;
 /// Relative tolerance on computed numbers (see the module documentation).
-pub const REL_TOL: f64 = 1e-4;
-/// Absolute tolerance on numbers that are themselves relative deviations (near zero).
-pub const DEV_TOL: f64 = 1e-4;
+pub const REL_TOL: f64 = 2e-3;
+/// Absolute tolerance on numbers that are themselves relative deviations (near zero): a
+/// relative error of [`REL_TOL`] in the friction moves `mu-bar / mu-bar_eq13 - 1` by about
+/// as much.
+pub const DEV_TOL: f64 = 2e-3;
 
 /// Columns that say how a result was obtained, not what it is: never compared.
 const IGNORED: &[&str] = &["seconds", "cached", "cycles", "newton_steps", "residual"];
@@ -225,8 +227,9 @@ mod tests {
             compare("fig3", BASE, &retimed).is_empty(),
             "seconds ignored"
         );
-        // A change at the level of the solver's iteration error (1e-6 relative) passes.
-        let noisy = BASE.replace("4.134437e1", "4.134441e1");
+        // A change at the level of the solver's iteration error (below 5e-4 relative:
+        // here 3.8e-4) passes.
+        let noisy = BASE.replace("4.134437e1", "4.136e1");
         assert!(compare("fig3", BASE, &noisy).is_empty());
     }
 
@@ -253,7 +256,8 @@ mod tests {
 
     #[test]
     fn deviations_status_and_shape_are_checked() {
-        let dev = BASE.replace("3.0e-3", "3.5e-3");
+        // A 1 % change of the friction moves its relative deviation by about 1e-2.
+        let dev = BASE.replace("3.0e-3", "1.3e-2");
         assert_eq!(compare("f", BASE, &dev)[0].column, "rel_dev_eq13");
         let failed = BASE.replace("0.5,solved", "0.5,failed: not converged");
         assert_eq!(compare("f", BASE, &failed)[0].column, "status");

@@ -59,17 +59,20 @@ impl BandMatrix {
 
     /// Solves `A x = b` in place (`b` becomes `x`); destroys `A`. Returns false when a pivot
     /// is zero or non-finite (the caller then skips the line).
+    ///
+    /// Rows are addressed as slices of the band storage: entry `(r, k)` is `row_r[k + lower
+    /// - r]`, so row `r = i + s` holds column `k` at `s` places before row `i` does.
     pub fn solve(&mut self, b: &mut [f64]) -> bool {
-        let n = self.n;
-        let lower = self.lower;
-        let last_col = |i: usize| (i + self.width - lower - 1).min(n - 1);
+        let (n, lower, width) = (self.n, self.lower, self.width);
+        // Offset in row `i` of its last stored column.
+        let last = |i: usize| (i + width - lower - 1).min(n - 1) + lower - i;
         for i in 0..n {
             // Pivot: largest |a(r, i)| for r in i..=i+lower.
             let rmax = (i + lower).min(n - 1);
             let mut piv = i;
-            let mut best = self.a[self.pos(i, i)].abs();
+            let mut best = self.a[i * width + lower].abs();
             for r in i + 1..=rmax {
-                let v = self.a[self.pos(r, i)].abs();
+                let v = self.a[r * width + lower - (r - i)].abs();
                 if v > best {
                     best = v;
                     piv = r;
@@ -78,34 +81,44 @@ impl BandMatrix {
             if !(best > 0.0 && best.is_finite()) {
                 return false;
             }
+            let end = last(i);
             if piv != i {
-                for k in i..=last_col(i) {
-                    let (pa, pb) = (self.pos(i, k), self.pos(piv, k));
-                    self.a.swap(pa, pb);
+                let s = piv - i;
+                let (top, bottom) = self.a.split_at_mut(piv * width);
+                let row_i = &mut top[i * width..(i + 1) * width];
+                let row_p = &mut bottom[..width];
+                for off in lower..=end {
+                    std::mem::swap(&mut row_i[off], &mut row_p[off - s]);
                 }
                 b.swap(i, piv);
             }
-            let d = self.a[self.pos(i, i)];
+            let (top, bottom) = self.a.split_at_mut((i + 1) * width);
+            let row_i = &top[i * width..];
+            let d = row_i[lower];
             for r in i + 1..=rmax {
-                let pr = self.pos(r, i);
-                let f = self.a[pr] / d;
+                let s = r - i;
+                let row_r = &mut bottom[(s - 1) * width..s * width];
+                let f = row_r[lower - s] / d;
                 if f == 0.0 {
                     continue;
                 }
-                self.a[pr] = 0.0;
-                for k in i + 1..=last_col(i) {
-                    let (pi, pk) = (self.pos(i, k), self.pos(r, k));
-                    self.a[pk] -= f * self.a[pi];
+                row_r[lower - s] = 0.0;
+                for (x, y) in row_r[lower + 1 - s..=end - s]
+                    .iter_mut()
+                    .zip(&row_i[lower + 1..=end])
+                {
+                    *x -= f * y;
                 }
                 b[r] -= f * b[i];
             }
         }
         for i in (0..n).rev() {
+            let row = &self.a[i * width..(i + 1) * width];
             let mut s = b[i];
-            for k in i + 1..=last_col(i) {
-                s -= self.a[self.pos(i, k)] * b[k];
+            for (a, x) in row[lower + 1..=last(i)].iter().zip(&b[i + 1..]) {
+                s -= a * x;
             }
-            b[i] = s / self.a[self.pos(i, i)];
+            b[i] = s / row[lower];
         }
         b.iter().all(|v| v.is_finite())
     }

@@ -14,6 +14,9 @@ pub(crate) struct Hierarchy {
     pub levels: Vec<Level>,
     pub model: Model,
     pub h0: f64,
+    /// The scale of the rolling friction (`Problem`'s), where it is computed: the cycles'
+    /// stopping rule watches it.
+    pub rolling_scale: Option<f64>,
     /// Current gain of the force-balance update (adapted, see `relax_force_balance`).
     gain: f64,
     /// The load defect at the previous update.
@@ -32,6 +35,7 @@ impl Hierarchy {
             levels,
             model,
             h0,
+            rolling_scale: None,
             gain: params.force_balance_gain,
             last_defect: 0.0,
             scratch: LineScratch::new(),
