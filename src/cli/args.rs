@@ -338,6 +338,8 @@ pub struct SolveArgs {
     /// Write the pressure and film fields to this CSV file (columns X, Y, P, H).
     #[arg(long, help_heading = "Output")]
     pub fields: Option<PathBuf>,
+    #[command(flatten)]
+    pub thermal: ThermalArgs,
     /// No per-cycle progress on stderr.
     #[arg(long, short, help_heading = "Output")]
     pub quiet: bool,
@@ -411,6 +413,8 @@ pub struct PredictArgs {
     /// Density-pressure law of --solve (default dowson-higginson).
     #[arg(long, value_enum, help_heading = "Solve")]
     pub density: Option<DensityArg>,
+    #[command(flatten)]
+    pub thermal: ThermalArgs,
 
     /// Print one JSON object instead of the summary.
     #[arg(long, help_heading = "Output")]
@@ -467,4 +471,24 @@ impl Cli {
     pub fn parse_args() -> Self {
         <Self as Parser>::parse()
     }
+}
+
+/// The thermal post-process's inputs (`repro solve`, `repro predict`).
+#[derive(Debug, Args)]
+pub struct ThermalArgs {
+    /// Thermal conductivity of both solids, W/(m K): 46 for bearing steel, 21 for
+    /// through-hardened steel (density 7850 kg/m^3, specific heat 470 J/(kg K)).
+    #[arg(
+        long = "k-solid",
+        default_value_t = 46.0,
+        help_heading = "Thermal post-process"
+    )]
+    pub k_solid: f64,
+    /// Thermal conductivity of the lubricant film, W/(m K).
+    #[arg(
+        long = "k-lubricant",
+        default_value_t = 0.13,
+        help_heading = "Thermal post-process"
+    )]
+    pub k_lubricant: f64,
 }

@@ -215,6 +215,11 @@ pub fn runs_csv(
         "cycles",
         "newton_steps",
         "residual",
+        "mu_bar_thermal",
+        "rel_dev_thermal",
+        "mu_bar_thermal_midplane",
+        "dt_film_k",
+        "dt_flash_k",
         "status",
     ];
     let rows: Vec<Vec<String>> = runs
@@ -305,11 +310,29 @@ pub fn runs_csv(
                 num(eq13),
             ];
             row.extend(rec_cells);
+            row.extend(thermal_cells(r.record()));
             row.push(status);
             row
         })
         .collect();
     table(&header, &rows)
+}
+
+/// The thermal columns of a case (steel, [`crate::physics::thermal::TARGET_INPUTS`]'s
+/// first): thermal sliding `mu-bar` (mean-temperature closure), its relative correction, the
+/// mid-plane closure's `mu-bar`, the largest film and surface temperature rises (K); blank
+/// where not computed (dimensionless cases, failures).
+pub fn thermal_cells(record: Option<&crate::artefacts::run::Record>) -> Vec<String> {
+    match record.and_then(|r| r.thermal().map(|t| (r, t))) {
+        Some((r, t)) => vec![
+            num(t.mu_bar_sliding),
+            num(t.correction(r.mu_bar_sliding)),
+            num(t.mu_bar_sliding_midplane),
+            num(t.dt_film_max_k),
+            num(t.dt_flash_max_k),
+        ],
+        None => vec![String::new(); 5],
+    }
 }
 
 /// Builds figure `name` (Figs. 1-7) at the context's level, else `default_level`.
