@@ -258,6 +258,19 @@ fn summary(rows: &[Row], figure: &str, lubricant: &str, table4: Option<&Row>) ->
             r.operating_point()
         ));
     }
+    // Where the film's Peclet number exceeds 1, convection along the film is not negligible
+    // and the conduction-only closure overstates the rise (thick, viscous films).
+    let convective = rows
+        .iter()
+        .filter(|r| r.figure == figure)
+        .filter_map(|r| r.run.record()?.thermal())
+        .filter(|t| t.film_peclet > 1.0)
+        .count();
+    if convective > 0 {
+        text.push_str(&format!(
+            " ({convective} with a film Peclet number above 1, where the conduction-only closure overstates the heating)"
+        ));
+    }
     if let Some((steel, hardened)) = table4.and_then(|r| r.corrections()) {
         text.push_str(&format!(
             "; the Table 4 case {:+.1} % (21 W/mK: {:+.1} %)",

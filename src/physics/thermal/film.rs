@@ -145,8 +145,10 @@ mod tests {
                 (mean / tau - 1.0).abs() < na * na / 240.0,
                 "Na {na}: mean closure {mean} vs exact {tau}"
             );
-            // The mid-plane closure heats more: it gives less stress than the exact flow.
-            assert!(mid < tau, "Na {na}: mid-plane {mid} vs exact {tau}");
+            // The two closures bracket the exact flow: the mean one heats a little less (its
+            // second-order term is smaller), the mid-plane one more (at Na = 1: +0.24 % and
+            // -3.7 % in stress about the exact 9 % reduction).
+            assert!(mid < tau && tau < mean, "Na {na}: {mid} < {tau} < {mean}");
         }
         // Past runaway (Na / 8 > 0.6627^2, Na > 3.51) no Couette flow carries the stress.
         let tau = (3.6 * k * eta_w / (beta * h * h)).sqrt();
