@@ -216,7 +216,7 @@ pub enum Work {
         params: point::Params,
         /// The thermal scales, where the case has them: the solution is post-processed with
         /// each of [`TARGET_INPUTS`].
-        thermal: Option<ThermalContact>,
+        thermal: Option<Box<ThermalContact>>,
     },
     /// A line contact (1-D Newton).
     Line {
@@ -490,7 +490,7 @@ pub fn point_jobs(cases: &[Case], params: &Params) -> Result<Vec<(Job, Problem)>
                 work: Work::Point {
                     problem: problem.clone(),
                     params,
-                    thermal: thermal_contact(c, &problem, &lubricants),
+                    thermal: thermal_contact(c, &problem, &lubricants).map(Box::new),
                 },
             };
             Ok((job, problem))

@@ -106,7 +106,7 @@ pub fn compute(
 /// at level 5 a non-positive film is reported here where a sweep refuses it ([`params`]).
 pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
     let problem = spec.problem()?;
-    let thermal = thermal_contact(&spec.case, &problem, &LubricantTable::table1());
+    let thermal = thermal_contact(&spec.case, &problem, &LubricantTable::table1()).map(Box::new);
     Ok(levels
         .iter()
         .map(|&level| {
@@ -121,7 +121,7 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
                 work: Work::Point {
                     problem: problem.clone(),
                     params,
-                    thermal,
+                    thermal: thermal.clone(),
                 },
             }
         })

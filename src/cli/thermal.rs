@@ -26,7 +26,7 @@ impl ThermalArgs {
             ("--k-solid", self.k_solid),
             ("--k-lubricant", self.k_lubricant),
         ] {
-            if !(v > 0.0) {
+            if v.is_nan() || v <= 0.0 {
                 bail!("{flag}: a conductivity must be positive, got {v}");
             }
         }

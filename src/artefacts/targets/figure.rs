@@ -228,31 +228,7 @@ pub fn runs_csv(
         .map(|(i, r)| {
             let g = &r.problem.groups;
             let tau_c = r.problem.tau_c();
-            let (lub, temp, ph, um, tau0) = match &r.case.spec {
-                Spec::Physical(p) => {
-                    let (l, t) = match &p.lubricant {
-                        LubricantSpec::Named {
-                            lubricant,
-                            temperature_c,
-                        } => (lubricant.clone(), num(*temperature_c)),
-                        LubricantSpec::Given { .. } => ("given".to_string(), String::new()),
-                    };
-                    (
-                        l,
-                        t,
-                        num(p.ph_pa / 1e9),
-                        num(p.um_m_s),
-                        num(p.tau0_pa / 1e6),
-                    )
-                }
-                Spec::Dimensionless(_) => (
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                ),
-            };
+            let [lub, temp, ph, um, tau0] = operating_cells(&r.case);
             let point = xy(r);
             let eq13 = mastercurve(tau_c, PAPER_C);
             let (rec_cells, status) = match &r.outcome {
@@ -316,6 +292,30 @@ pub fn runs_csv(
         })
         .collect();
     table(&header, &rows)
+}
+
+/// The physical operating point of a case as CSV cells: lubricant, temperature (C), `p_H`
+/// (GPa), `u_m` (m/s), `tau0` (MPa); blank for a dimensionless case.
+pub fn operating_cells(case: &Case) -> [String; 5] {
+    match &case.spec {
+        Spec::Physical(p) => {
+            let (l, t) = match &p.lubricant {
+                LubricantSpec::Named {
+                    lubricant,
+                    temperature_c,
+                } => (lubricant.clone(), num(*temperature_c)),
+                LubricantSpec::Given { .. } => ("given".to_string(), String::new()),
+            };
+            [
+                l,
+                t,
+                num(p.ph_pa / 1e9),
+                num(p.um_m_s),
+                num(p.tau0_pa / 1e6),
+            ]
+        }
+        Spec::Dimensionless(_) => Default::default(),
+    }
 }
 
 /// The thermal columns of a case (steel, [`crate::physics::thermal::TARGET_INPUTS`]'s

@@ -8,7 +8,7 @@
 //! 46 and 21 W/(m K), the mid-plane bound, temperature rises), `thermal.svg` (isothermal and
 //! thermal `mu-bar` against `tau_c`, Eq. 13 dashed).
 
-use super::figure::{self, run_sweep};
+use super::figure::{self, operating_cells, run_sweep};
 use super::target as registry_target;
 use crate::artefacts::csv::{num, table};
 use crate::artefacts::fit::PAPER_C;
@@ -107,26 +107,7 @@ fn csv(rows: &[Row]) -> String {
     ];
     let cells = rows.iter().map(|row| {
         let r = row.run;
-        let (lub, temp, ph, um, slip, tau0) = match &r.case.spec {
-            Spec::Physical(p) => {
-                let (l, t) = match &p.lubricant {
-                    LubricantSpec::Named {
-                        lubricant,
-                        temperature_c,
-                    } => (lubricant.clone(), num(*temperature_c)),
-                    LubricantSpec::Given { .. } => ("given".into(), String::new()),
-                };
-                (
-                    l,
-                    t,
-                    num(p.ph_pa / 1e9),
-                    num(p.um_m_s),
-                    num(p.slip),
-                    num(p.tau0_pa / 1e6),
-                )
-            }
-            Spec::Dimensionless(_) => Default::default(),
-        };
+        let [lub, temp, ph, um, tau0] = operating_cells(&r.case);
         let mut out = vec![
             row.figure.to_string(),
             row.case.to_string(),
@@ -134,7 +115,7 @@ fn csv(rows: &[Row]) -> String {
             temp,
             ph,
             um,
-            slip,
+            num(r.problem.groups.slip),
             tau0,
             num(r.problem.tau_c()),
         ];

@@ -85,7 +85,7 @@ pub fn solve_strip(
             continue;
         }
         let h = strip.h_m[i];
-        if !(h > 0.0) {
+        if h.is_nan() || h <= 0.0 {
             return Err(ThermalError::NoFilm { h_m: h });
         }
         let at = |t: f64| {
