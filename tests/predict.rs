@@ -255,3 +255,42 @@ fn fig8_transforms_every_dataset_and_names_bad_rows() {
     assert!(err.contains("b.csv: row 1 (line 2): slip:"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn predict_estimates_the_shear_heating_and_warns_above_five_per_cent() {
+    // The Appendix case: the flat-film thermal estimate lowers friction by a few per cent
+    // (4.4 % measured), under the 5 % of the warning; Eq. (14) with the correction is said.
+    let (code, out, err) = repro(&with(&worked(), &["--json"]));
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let c = v["thermal"]["correction"].as_f64().unwrap();
+    assert!((-0.05..-0.01).contains(&c), "correction {c}");
+    let mu = v["mu_bar"].as_f64().unwrap();
+    let thermal = v["mu_bar_thermal"].as_f64().unwrap();
+    assert!((thermal / (mu * (1.0 + c)) - 1.0).abs() < 1e-12);
+    // At 2 % slip the shear heat quadruples: 14.6 % measured, above 5 %, warned by name.
+    let mut args = worked();
+    let slip = args.iter().position(|a| *a == "--slip").unwrap() + 1;
+    args[slip] = "0.02";
+    let (code, out, err) = repro(&with(&args, &["--json"]));
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let c = v["thermal"]["correction"].as_f64().unwrap();
+    assert!((-0.3..-0.08).contains(&c), "correction {c}");
+    let warnings = v["warnings"].to_string();
+    assert!(warnings.contains("shear heating"), "{warnings}");
+    // The through-hardened steel heats more (a lower conductivity): a larger correction.
+    let (_, out, _) = repro(&with(&args, &["--json", "--k-solid", "21"]));
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v["thermal"]["correction"].as_f64().unwrap() < c);
+    // A lubricant given by alpha and eta0 alone has no temperature coefficient: no estimate,
+    // and the paper's largest slip is the warning instead.
+    let (code, out, err) = repro(&[
+        "predict", "--alpha", "21.6e-9", "--eta0", "8.24e-3", "--ph", "3e9", "--um", "12",
+        "--slip", "0.05", "--tau0", "4e6", "--json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v["thermal"].is_null());
+    assert!(v["warnings"].to_string().contains("isothermal"));
+}

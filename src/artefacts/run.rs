@@ -7,9 +7,11 @@ use super::cache::{key_of, Cache, Lookup, Stamp};
 use crate::physics::case::{Case, Problem};
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
+use crate::physics::thermal::{ThermalContact, TARGET_INPUTS, THERMAL_REVISION};
 use crate::solver::grid::Domain;
 use crate::solver::output::{Film, Friction, Info, SolveError};
 use crate::solver::point::{Params, SOLVER_REVISION};
+use crate::solver::thermal::{point_thermal, Thermal};
 use crate::solver::{line, point};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -40,6 +42,11 @@ pub struct Record {
     pub residual: f64,
     /// Force-balance error.
     pub load_error: f64,
+    /// The thermal post-process of a physical point contact with a Table 1 lubricant, one per
+    /// entry of [`TARGET_INPUTS`] in its order (steel, then through-hardened steel); empty for
+    /// dimensionless cases, line contacts and where the post-process failed.
+    #[serde(default)]
+    pub thermal: Vec<Thermal>,
     // The wall time is not part of the result: it lives in the entry's stamp. (Entries
     // written before stamps carry a `seconds` here, which is ignored on reading.)
 }
@@ -59,7 +66,13 @@ impl Record {
             newton_steps: info.newton_steps,
             residual: info.residual(),
             load_error: info.load_error,
+            thermal: Vec::new(),
         }
+    }
+
+    /// The thermal post-process with the default inputs (steel), if computed.
+    pub fn thermal(&self) -> Option<&Thermal> {
+        self.thermal.first()
     }
 
     /// Sliding plus rolling.
@@ -156,8 +169,9 @@ impl CaseRun {
 }
 
 /// The cache key of a case at the given solver parameters: the case, the parameters a target
-/// can set (level, domain, rolling friction) and the solver revision, which is raised whenever
-/// a default parameter or the numerics change.
+/// can set (level, domain, rolling friction), the solver revision, which is raised whenever
+/// a default parameter or the numerics change, and the thermal post-process's inputs and
+/// revision.
 pub fn case_key(case: &Case, params: &Params) -> String {
     let d = &params.domain;
     key_of(&(
@@ -166,7 +180,20 @@ pub fn case_key(case: &Case, params: &Params) -> String {
         (d.x_start, d.x_end, d.y_half),
         params.rolling_friction,
         SOLVER_REVISION,
+        (THERMAL_REVISION, TARGET_INPUTS),
     ))
+}
+
+/// The thermal scales of a case: a physical case with a Table 1 lubricant, else `None`.
+pub fn thermal_contact(
+    case: &Case,
+    problem: &Problem,
+    lubricants: &LubricantTable,
+) -> Option<ThermalContact> {
+    match &case.spec {
+        crate::physics::case::Spec::Physical(p) => ThermalContact::of_point(p, problem, lubricants),
+        crate::physics::case::Spec::Dimensionless(_) => None,
+    }
 }
 
 /// The parameters a case of a sweep is solved with: `params` on the domain its load calls
@@ -187,6 +214,9 @@ pub enum Work {
         problem: Problem,
         /// Solver parameters.
         params: point::Params,
+        /// The thermal scales, where the case has them: the solution is post-processed with
+        /// each of [`TARGET_INPUTS`].
+        thermal: Option<Box<ThermalContact>>,
     },
     /// A line contact (1-D Newton).
     Line {
@@ -201,9 +231,23 @@ impl Work {
     /// Solves it (no progress observer).
     pub fn solve(&self) -> Outcome {
         match self {
-            Work::Point { problem, params } => {
+            Work::Point {
+                problem,
+                params,
+                thermal,
+            } => {
                 let r = point::solve(problem, params, None);
-                Outcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info)))
+                let mut outcome = Outcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info)));
+                if let (Ok(s), Some(contact), Outcome::Solved(record)) = (&r, thermal, &mut outcome)
+                {
+                    // A failed post-process leaves the isothermal record as it is.
+                    record.thermal = TARGET_INPUTS
+                        .iter()
+                        .map(|inputs| point_thermal(s, problem, contact, inputs))
+                        .collect::<Result<_, _>>()
+                        .unwrap_or_default();
+                }
+                outcome
             }
             Work::Line { problem, params } => {
                 let r = line::solve(problem, params, None);
@@ -446,6 +490,7 @@ pub fn point_jobs(cases: &[Case], params: &Params) -> Result<Vec<(Job, Problem)>
                 work: Work::Point {
                     problem: problem.clone(),
                     params,
+                    thermal: thermal_contact(c, &problem, &lubricants).map(Box::new),
                 },
             };
             Ok((job, problem))

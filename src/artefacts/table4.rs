@@ -2,7 +2,9 @@
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
 use super::cache::{key_of, Stamp};
-use super::run::{case_key, describe, run_jobs, Job, Outcome, RunProgress, Store, Work};
+use super::run::{
+    case_key, describe, run_jobs, thermal_contact, Job, Outcome, RunProgress, Store, Work,
+};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::solver::output::Progress;
@@ -104,6 +106,7 @@ pub fn compute(
 /// at level 5 a non-positive film is reported here where a sweep refuses it ([`params`]).
 pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
     let problem = spec.problem()?;
+    let thermal = thermal_contact(&spec.case, &problem, &LubricantTable::table1()).map(Box::new);
     Ok(levels
         .iter()
         .map(|&level| {
@@ -118,6 +121,7 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
                 work: Work::Point {
                     problem: problem.clone(),
                     params,
+                    thermal: thermal.clone(),
                 },
             }
         })

@@ -51,6 +51,9 @@ pub enum Command {
     /// Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on the refined friction
     /// formula fitted to them, cross-validated by figure.
     Mastercurve(TargetArgs),
+    /// Beyond the paper: the shear-heating correction of Figs. 4-6, isothermal against
+    /// thermal mu-bar, and where the paper's isothermal assumption holds.
+    Thermal(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
     Predict(Box<PredictArgs>),
@@ -338,6 +341,8 @@ pub struct SolveArgs {
     /// Write the pressure and film fields to this CSV file (columns X, Y, P, H).
     #[arg(long, help_heading = "Output")]
     pub fields: Option<PathBuf>,
+    #[command(flatten)]
+    pub thermal: ThermalArgs,
     /// No per-cycle progress on stderr.
     #[arg(long, short, help_heading = "Output")]
     pub quiet: bool,
@@ -411,6 +416,8 @@ pub struct PredictArgs {
     /// Density-pressure law of --solve (default dowson-higginson).
     #[arg(long, value_enum, help_heading = "Solve")]
     pub density: Option<DensityArg>,
+    #[command(flatten)]
+    pub thermal: ThermalArgs,
 
     /// Print one JSON object instead of the summary.
     #[arg(long, help_heading = "Output")]
@@ -467,4 +474,24 @@ impl Cli {
     pub fn parse_args() -> Self {
         <Self as Parser>::parse()
     }
+}
+
+/// The thermal post-process's inputs (`repro solve`, `repro predict`).
+#[derive(Debug, Args)]
+pub struct ThermalArgs {
+    /// Thermal conductivity of both solids, W/(m K): 46 for bearing steel, 21 for
+    /// through-hardened steel (density 7850 kg/m^3, specific heat 470 J/(kg K)).
+    #[arg(
+        long = "k-solid",
+        default_value_t = 46.0,
+        help_heading = "Thermal post-process"
+    )]
+    pub k_solid: f64,
+    /// Thermal conductivity of the lubricant film, W/(m K).
+    #[arg(
+        long = "k-lubricant",
+        default_value_t = 0.13,
+        help_heading = "Thermal post-process"
+    )]
+    pub k_lubricant: f64,
 }

@@ -16,3 +16,4 @@ pub mod shard;
 pub mod slurm;
 pub mod solve;
 pub mod target;
+pub mod thermal;

@@ -8,11 +8,13 @@ use super::args::PredictArgs;
 use super::config::{check_level, flag_error, lubricant_spec, physics};
 use super::print::{print_failure, rolling_text, solve_progress};
 use super::solve::point_report;
+use super::thermal::{self, ThermalReport};
 use anyhow::{bail, Result};
 use repro::artefacts::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
 use repro::artefacts::refined::{Features, REFINED, REFINED_BAND};
 use repro::physics::case::{Case, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::lubricant::LubricantTable;
+use repro::physics::thermal::ThermalError;
 use repro::physics::traction::{
     characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
     ViscosityAtPh, ISOTHERMAL_SLIP_MAX,
@@ -21,8 +23,10 @@ use repro::solver::point::{solve as solve_point, Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;
 
-/// What the paper says about where Eq. (14) does not hold, for this case.
-fn warnings(c: &Characteristic) -> Vec<String> {
+/// What the paper says about where Eq. (14) does not hold, for this case: low `tau_c`, and
+/// shear heating beyond [`repro::physics::thermal::ISOTHERMAL_CORRECTION_MAX`] (where the
+/// correction cannot be estimated, the paper's largest slip instead).
+fn warnings(c: &Characteristic, heat: &Option<Result<ThermalReport, ThermalError>>) -> Vec<String> {
     let mut w = Vec::new();
     if c.tau_c < FIT_TAU_C_MIN {
         w.push(format!(
@@ -30,7 +34,10 @@ fn warnings(c: &Characteristic) -> Vec<String> {
             c.tau_c
         ));
     }
-    if c.slip > ISOTHERMAL_SLIP_MAX {
+    if let (_, Some(warning)) = thermal::describe(heat) {
+        w.push(warning);
+    }
+    if heat.is_none() && c.slip > ISOTHERMAL_SLIP_MAX {
         w.push(format!(
             "S = {} is above {ISOTHERMAL_SLIP_MAX}, the largest slip of the paper's isothermal runs (Table 2, Sec. III B): with significant sliding, shear heating makes Eq. (14) predict too large a friction (Conclusions)",
             c.slip
@@ -97,12 +104,12 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     let problem = Problem::from_case(&case, &lubs).map_err(flag_error)?;
     let refined = Prediction::of(&problem, tau0, &c);
 
-    let warns = warnings(&c);
+    let inputs = args.thermal.inputs()?;
     let solved = if args.solve {
         let params = Params::at_level(level);
         let mut printer = solve_progress(args.quiet || args.json);
         match solve_point(&problem, &params, Some(&mut printer)) {
-            Ok(s) => Some((problem, s)),
+            Ok(s) => Some((problem.clone(), s)),
             Err(e) => {
                 print_failure(&e);
                 return Ok(false);
@@ -111,6 +118,17 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     } else {
         None
     };
+    // The shear-heating correction: of the solve where there is one, else the flat-film
+    // estimate; applied to Eq. (14) as a relative correction.
+    let heat = match &solved {
+        Some((p, s)) => thermal::of_solution(&case, p, s, &inputs),
+        None => thermal::flat_estimate(&case, &problem, &inputs),
+    };
+    let mu_bar_thermal = match &heat {
+        Some(Ok(r)) => Some(mu_bar * (1.0 + r.correction())),
+        _ => None,
+    };
+    let warns = warnings(&c, &heat);
 
     if args.json {
         let solve = solved.as_ref().map(|(p, s)| {
@@ -135,6 +153,8 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
             "mu_bar_refined_band": [refined.low, refined.high],
             "mu_bar_refined_source": "refined formula (beyond the paper; repro mastercurve), band: 95 % of cross-validated residuals",
             "compute_seconds": compute_seconds,
+            "thermal": thermal::json_of(&heat),
+            "mu_bar_thermal": mu_bar_thermal,
             "warnings": warns,
             "solve": solve,
             "difference": difference,
@@ -153,6 +173,13 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
                 solved.as_ref().map(|(_, s)| s)
             )
         );
+        print!("{}", thermal::describe(&heat).0);
+        if let Some(m) = mu_bar_thermal {
+            println!(
+                "            Eq. (14) with the thermal correction: mu-bar = {m:.4}, mu = {:.5}",
+                c.friction(m, tau0)
+            );
+        }
         for w in &warns {
             eprintln!("warning: {w}");
         }

@@ -4,6 +4,7 @@
 use super::args::SolveArgs;
 use super::config::flag_error;
 use super::print::{print_failure, rolling_text, solve_progress, SolveReport};
+use super::thermal;
 use anyhow::{Context as _, Result};
 use repro::artefacts::csv::{num, table, write_atomic};
 use repro::physics::case::Problem;
@@ -22,6 +23,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     let case = args.case()?;
     let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
     let params = args.params(problem.groups.m)?;
+    let inputs = args.thermal.inputs()?;
     let mut printer = solve_progress(args.quiet);
     let s = match point::solve(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,
@@ -40,13 +42,17 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
         });
         write_fields(path, &["X", "Y", "P", "H"], rows)?;
     }
+    let heat = thermal::of_solution(&case, &problem, &s, &inputs);
+    let (line, warning) = thermal::describe(&heat);
     if args.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(&point_report(&problem, &s).json())?
-        );
+        let mut v = point_report(&problem, &s).json();
+        v["thermal"] = thermal::json_of(&heat);
+        println!("{}", serde_json::to_string_pretty(&v)?);
     } else {
-        print!("{}", point_text(&problem, &s));
+        print!("{}{line}", point_text(&problem, &s));
+        if let Some(w) = warning {
+            eprintln!("warning: {w}");
+        }
     }
     Ok(true)
 }

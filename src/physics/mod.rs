@@ -10,5 +10,6 @@ pub mod hertz;
 pub mod line_contact;
 pub mod lubricant;
 pub mod rheology;
+pub mod thermal;
 pub mod traction;
 pub mod viscosity;

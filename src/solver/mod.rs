@@ -11,6 +11,7 @@ pub mod line;
 pub(crate) mod line_search;
 pub mod output;
 pub mod point;
+pub mod thermal;
 
 /// Fixes the parallelism of faer's factorisations (the Newton-Krylov preconditioner's sparse
 /// LU, the line contact's dense LU) at a degree of 2, whatever the number of threads. faer

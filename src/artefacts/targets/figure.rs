@@ -215,6 +215,11 @@ pub fn runs_csv(
         "cycles",
         "newton_steps",
         "residual",
+        "mu_bar_thermal",
+        "rel_dev_thermal",
+        "mu_bar_thermal_midplane",
+        "dt_film_k",
+        "dt_flash_k",
         "status",
     ];
     let rows: Vec<Vec<String>> = runs
@@ -223,31 +228,7 @@ pub fn runs_csv(
         .map(|(i, r)| {
             let g = &r.problem.groups;
             let tau_c = r.problem.tau_c();
-            let (lub, temp, ph, um, tau0) = match &r.case.spec {
-                Spec::Physical(p) => {
-                    let (l, t) = match &p.lubricant {
-                        LubricantSpec::Named {
-                            lubricant,
-                            temperature_c,
-                        } => (lubricant.clone(), num(*temperature_c)),
-                        LubricantSpec::Given { .. } => ("given".to_string(), String::new()),
-                    };
-                    (
-                        l,
-                        t,
-                        num(p.ph_pa / 1e9),
-                        num(p.um_m_s),
-                        num(p.tau0_pa / 1e6),
-                    )
-                }
-                Spec::Dimensionless(_) => (
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                ),
-            };
+            let [lub, temp, ph, um, tau0] = operating_cells(&r.case);
             let point = xy(r);
             let eq13 = mastercurve(tau_c, PAPER_C);
             let (rec_cells, status) = match &r.outcome {
@@ -305,11 +286,53 @@ pub fn runs_csv(
                 num(eq13),
             ];
             row.extend(rec_cells);
+            row.extend(thermal_cells(r.record()));
             row.push(status);
             row
         })
         .collect();
     table(&header, &rows)
+}
+
+/// The physical operating point of a case as CSV cells: lubricant, temperature (C), `p_H`
+/// (GPa), `u_m` (m/s), `tau0` (MPa); blank for a dimensionless case.
+pub fn operating_cells(case: &Case) -> [String; 5] {
+    match &case.spec {
+        Spec::Physical(p) => {
+            let (l, t) = match &p.lubricant {
+                LubricantSpec::Named {
+                    lubricant,
+                    temperature_c,
+                } => (lubricant.clone(), num(*temperature_c)),
+                LubricantSpec::Given { .. } => ("given".to_string(), String::new()),
+            };
+            [
+                l,
+                t,
+                num(p.ph_pa / 1e9),
+                num(p.um_m_s),
+                num(p.tau0_pa / 1e6),
+            ]
+        }
+        Spec::Dimensionless(_) => Default::default(),
+    }
+}
+
+/// The thermal columns of a case (steel, [`crate::physics::thermal::TARGET_INPUTS`]'s
+/// first): thermal sliding `mu-bar` (mean-temperature closure), its relative correction, the
+/// mid-plane closure's `mu-bar`, the largest film and surface temperature rises (K); blank
+/// where not computed (dimensionless cases, failures).
+pub fn thermal_cells(record: Option<&crate::artefacts::run::Record>) -> Vec<String> {
+    match record.and_then(|r| r.thermal().map(|t| (r, t))) {
+        Some((r, t)) => vec![
+            num(t.mu_bar_sliding),
+            num(t.correction(r.mu_bar_sliding)),
+            num(t.mu_bar_sliding_midplane),
+            num(t.dt_film_max_k),
+            num(t.dt_flash_max_k),
+        ],
+        None => vec![String::new(); 5],
+    }
 }
 
 /// Builds figure `name` (Figs. 1-7) at the context's level, else `default_level`.

@@ -6,6 +6,7 @@ pub mod fig8;
 pub mod figure;
 pub mod mastercurve;
 pub mod tables;
+pub mod thermal;
 
 use super::provenance::{Provenance, SUFFIX};
 use super::run::Job;
@@ -52,6 +53,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed, default_level: Some(7) },
     Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
     Target { name: "mastercurve", description: "Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on a refined formula fitted to them, cross-validated by figure", kind: Kind::Computed, default_level: None },
+    Target { name: "thermal", description: "Beyond the paper: the shear-heating correction of Figs. 4-6 (isothermal vs thermal mu-bar, where the isothermal assumption holds)", kind: Kind::Computed, default_level: None },
 ];
 
 /// Looks a target up.
@@ -87,6 +89,7 @@ pub fn jobs(name: &str, ctx: &Context) -> Result<Vec<Job>, String> {
             }
             Ok(all)
         }
+        "thermal" => thermal::jobs(ctx),
         figure_name => figure::jobs(figure_name, t.default_level, ctx),
     }
 }
@@ -102,6 +105,7 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "table4" => tables::table4(ctx)?,
         "fig8" => fig8::build(ctx)?,
         "mastercurve" => mastercurve::build(ctx)?,
+        "thermal" => thermal::build(ctx)?,
         figure_name => figure::build(figure_name, t.default_level, ctx)?,
     };
     if !built.files.iter().any(|f| f.ends_with(SUFFIX)) {

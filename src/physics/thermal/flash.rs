@@ -1,0 +1,177 @@
+//! Jaeger's moving heat source at high Peclet number: the surface temperature rise of a body
+//! moving at speed `u` under a heat flux `q(x)` that is fixed in space,
+//!
+//! `T(x) = (1 / sqrt(pi k rho c u)) int_{-inf}^{x} q(s) / sqrt(x - s) ds`,
+//!
+//! the one-dimensional (normal to the surface) conduction of a surface element that has been
+//! under the source for the time `(x - s)/u` (Jaeger 1942; Carslaw and Jaeger, "Conduction of
+//! Heat in Solids", Sec. 10.7). It holds for Peclet numbers `u a / (2 kappa)` above about 5.
+//!
+//! On a uniform grid of spacing `dx` the flux is taken constant over each node's cell
+//! `[x_k - dx/2, x_k + dx/2]` and the kernel integrated exactly over it: a uniform strip whose
+//! edges are cell faces is reproduced exactly, and the weights depend on `i - k` only.
+
+use super::{Solid, ThermalError};
+use std::f64::consts::PI;
+
+/// The flash-temperature operator of one body on one grid spacing.
+#[derive(Debug, Clone)]
+pub struct Flash {
+    /// `sqrt(dx / (pi k rho c u))`, K m^2/W.
+    scale: f64,
+    /// `w_0 = sqrt(2)` (the node's own half cell), `w_k = 2 (sqrt(k + 1/2) - sqrt(k - 1/2))`.
+    weights: Vec<f64>,
+}
+
+impl Flash {
+    /// The operator of `solid` moving at `speed_m_s` on a grid of spacing `dx_m` with `nodes`
+    /// nodes. An infinitely conducting solid gives zero temperatures.
+    pub fn new(solid: &Solid, speed_m_s: f64, dx_m: f64, nodes: usize) -> Self {
+        let weights = (0..nodes)
+            .map(|k| {
+                if k == 0 {
+                    std::f64::consts::SQRT_2
+                } else {
+                    let k = k as f64;
+                    2.0 * ((k + 0.5).sqrt() - (k - 0.5).sqrt())
+                }
+            })
+            .collect();
+        Flash {
+            scale: (dx_m / (PI * solid.k_rho_c() * speed_m_s)).sqrt(),
+            weights,
+        }
+    }
+
+    /// The operator for surface `surface` (1 or 2) moving at `speed_m_s`, refused where the
+    /// surface stands still.
+    pub fn of_surface(
+        surface: u8,
+        solid: &Solid,
+        speed_m_s: f64,
+        dx_m: f64,
+        nodes: usize,
+    ) -> Result<Self, ThermalError> {
+        if speed_m_s > 0.0 && speed_m_s.is_finite() {
+            Ok(Self::new(solid, speed_m_s, dx_m, nodes))
+        } else {
+            Err(ThermalError::StationarySurface { surface, speed_m_s })
+        }
+    }
+
+    /// The rise at node `i` due to the flux upstream of it, `q[0..i]` (K).
+    pub fn upstream(&self, q: &[f64], i: usize) -> f64 {
+        let sum: f64 = (1..=i).map(|k| self.weights[k] * q[i - k]).sum();
+        self.scale * sum
+    }
+
+    /// The rise at a node per unit of its own flux (K m^2/W).
+    pub fn own(&self) -> f64 {
+        self.scale * self.weights[0]
+    }
+
+    /// The rise at every node under the flux `q` (K).
+    pub fn temperatures(&self, q: &[f64]) -> Vec<f64> {
+        (0..q.len())
+            .map(|i| self.upstream(q, i) + self.own() * q[i])
+            .collect()
+    }
+}
+
+/// Jaeger's closed form for a uniform strip of flux `q` from `x_start` to `x_end` on a body
+/// of `solid` moving at `speed_m_s`: `T(x) = 2 q (sqrt(x - x_start) - sqrt(x - x_end)) /
+/// sqrt(pi k rho c u)` (each root taken where its argument is positive). Its largest value,
+/// at the trailing edge, is `2 q sqrt(2 b) / sqrt(pi k rho c u)` for a strip `2b` wide, the
+/// `1.13 q b / (k sqrt(Pe))` of Jaeger with `Pe = u b / (2 kappa)`.
+pub fn jaeger_uniform_strip(
+    solid: &Solid,
+    speed_m_s: f64,
+    q: f64,
+    x_start: f64,
+    x_end: f64,
+    x: f64,
+) -> f64 {
+    let root = |d: f64| if d > 0.0 { d.sqrt() } else { 0.0 };
+    2.0 * q * (root(x - x_start) - root(x - x_end)) / (PI * solid.k_rho_c() * speed_m_s).sqrt()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_uniform_strip_gives_jaegers_closed_form() {
+        // A strip of 2b = 0.4 mm at 1 GW/m^2 on steel at 5 m/s, edges on cell faces: the
+        // piecewise-constant flux is the strip itself and the cell integrals are exact, so
+        // only round-off remains (the sums run over some 400 terms: 1e-12 relative).
+        let solid = Solid::STEEL;
+        let (u, q, dx) = (5.0, 1e9, 1e-6);
+        let n = 1000;
+        let x = |i: usize| i as f64 * dx;
+        let (first, last) = (200, 599);
+        let flux: Vec<f64> = (0..n)
+            .map(|i| if (first..=last).contains(&i) { q } else { 0.0 })
+            .collect();
+        let t = Flash::new(&solid, u, dx, n).temperatures(&flux);
+        let (start, end) = (x(first) - 0.5 * dx, x(last) + 0.5 * dx);
+        let t_max = jaeger_uniform_strip(&solid, u, q, start, end, end);
+        for (i, ti) in t.iter().enumerate() {
+            let exact = jaeger_uniform_strip(&solid, u, q, start, end, x(i));
+            assert!(
+                (ti - exact).abs() < 1e-12 * t_max,
+                "node {i}: {ti} vs {exact}"
+            );
+        }
+        // The classical form of the maximum: 1.128 q b / (k sqrt(Pe)), Pe = u b / (2 kappa).
+        let b = 0.5 * (end - start);
+        let pe = u * b / (2.0 * solid.diffusivity());
+        let classical = 2.0 / PI.sqrt() * q * b / (solid.conductivity_w_mk * pe.sqrt());
+        assert!(
+            (t_max / classical - 1.0).abs() < 1e-12,
+            "{t_max} vs {classical}"
+        );
+    }
+
+    #[test]
+    fn a_smooth_flux_converges_at_the_order_of_the_rule() {
+        // A Hertzian-shaped flux q0 sqrt(1 - (x/b)^2), sampled at the nodes: the rule's error
+        // at the trailing edge is first order in dx (the cells at the square-root edges
+        // misplace O(dx) of the flux): it falls by more than 1.8 per halving (2 expected), and
+        // at 128 cells across the contact (the level-7 resolution) it is 0.54 %, held below
+        // 0.6 %.
+        let solid = Solid::STEEL;
+        let (u, q0, b) = (10.0, 1e9, 2e-4);
+        let at_edge = |cells: usize| {
+            let dx = 2.0 * b / cells as f64;
+            let n = cells + 1;
+            let flux: Vec<f64> = (0..n)
+                .map(|i| {
+                    let s = -b + i as f64 * dx;
+                    q0 * (1.0 - (s / b).powi(2)).max(0.0).sqrt()
+                })
+                .collect();
+            *Flash::new(&solid, u, dx, n)
+                .temperatures(&flux)
+                .last()
+                .unwrap()
+        };
+        let reference = at_edge(1 << 14);
+        let errors: Vec<f64> = [64, 128, 256]
+            .iter()
+            .map(|&c| (at_edge(c) / reference - 1.0).abs())
+            .collect();
+        assert!(errors[1] < 6e-3, "{errors:?}");
+        assert!(
+            errors[0] / errors[1] > 1.8 && errors[1] / errors[2] > 1.8,
+            "{errors:?}"
+        );
+    }
+
+    #[test]
+    fn a_standing_surface_is_refused() {
+        assert!(matches!(
+            Flash::of_surface(1, &Solid::STEEL, 0.0, 1e-6, 10),
+            Err(ThermalError::StationarySurface { surface: 1, .. })
+        ));
+    }
+}
