@@ -27,10 +27,13 @@ pub enum Effect {
     Eyring,
     /// The rolling (Poiseuille) part of the friction, one count per friction evaluation.
     RollingFriction,
+    /// The limiting shear stress's saturation of the Eyring stress (plain Eyring is the
+    /// alternative).
+    LimitingShearStress,
 }
 
 /// Number of [`Effect`]s.
-pub const EFFECTS: usize = 4;
+pub const EFFECTS: usize = 5;
 
 /// Evaluations counted per effect, indexed by `Effect as usize`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
