@@ -223,6 +223,9 @@ pub enum DensityArg {
 pub enum RheologyArg {
     Eyring,
     Newtonian,
+    /// Eyring with a limiting shear stress tau_L = tau_L0 + Lambda p (--lambda-lss, --tau-l0;
+    /// beyond the paper).
+    EyringLss,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -307,6 +310,14 @@ pub struct SolveArgs {
     /// Rheology.
     #[arg(long, value_enum)]
     pub rheology: Option<RheologyArg>,
+    /// Limiting shear stress's pressure slope Lambda = d tau_L / dp (with --rheology
+    /// eyring-lss; e.g. 0.08).
+    #[arg(long = "lambda-lss")]
+    pub lambda_lss: Option<f64>,
+    /// Limiting shear stress at ambient pressure tau_L0, Pa (with --rheology eyring-lss;
+    /// must be > 0).
+    #[arg(long = "tau-l0")]
+    pub tau_l0: Option<f64>,
 
     /// Solve a line contact (1-D solver, Fig. 7) with the same flags; --ry and --d do not
     /// apply. The load is given by --ph (physical form) or by the line-contact M.

@@ -76,7 +76,7 @@ mod tests {
     use crate::physics::case::{Case, DimensionlessCase, Physics, Problem, Spec};
     use crate::physics::density::DensityLaw;
     use crate::physics::lubricant::LubricantTable;
-    use crate::physics::rheology::Rheology;
+    use crate::physics::rheology::{LimitingShearStress, Rheology};
     use crate::physics::viscosity::ViscosityLaw;
     use crate::solver::point::{solve, Params};
 
@@ -159,6 +159,7 @@ mod tests {
                 Effect::DowsonHigginson,
                 Effect::Eyring,
                 Effect::RollingFriction,
+                Effect::LimitingShearStress,
             ] {
                 let n = counts.of(other);
                 if other == effect {
@@ -174,7 +175,7 @@ mod tests {
     }
 
     #[test]
-    fn the_paper_physics_evaluates_every_effect() {
+    fn the_paper_physics_evaluates_every_effect_but_the_limit() {
         let counts = evaluated(Physics::figs_4_to_7(), true);
         for effect in [
             Effect::Roelands,
@@ -184,6 +185,17 @@ mod tests {
         ] {
             assert!(counts.of(effect) > 0, "{effect:?}");
         }
+        // The paper's Eyring never touches the limiting shear stress; a case that asks for it
+        // evaluates it (the control that its counter is wired in).
+        assert_eq!(counts.of(Effect::LimitingShearStress), 0);
+        let lss = Physics {
+            rheology: Rheology::EyringLss(LimitingShearStress {
+                lambda: 0.05,
+                tau_l0_pa: 2e6,
+            }),
+            ..Physics::figs_4_to_7()
+        };
+        assert!(evaluated(lss, false).of(Effect::LimitingShearStress) > 0);
         // The rolling friction is one pass over the converged solution, not a per-cycle cost.
         assert_eq!(counts.of(Effect::RollingFriction), 1);
     }

@@ -182,6 +182,34 @@ mod tests {
     }
 
     #[test]
+    fn a_saturated_hertzian_contact_carries_the_limit() {
+        // The exact limit: with the whole Hertzian contact saturated, mu-bar =
+        // Lambda-bar + (tau_L0/tau0) A/W, A/W = 3/2 for the ellipse and 4/pi for the line.
+        // ln x_c = 600 with constant viscosity: tau_E = 600.7 everywhere against tau_L <= 2.3,
+        // so tau_m = tau_L (1 - r^-1/2 ...) with r >= 6.8e4: 7.4e-6 relative at most. The
+        // remaining integrand is a polynomial in P for the ellipse (Simpson exact) and
+        // (a + b cos t) cos t for the line (Simpson's error ~ 1e-13).
+        let law = ShearLaw::EyringLss {
+            tau_l0_bar: 0.3,
+            lambda_bar: 2.0,
+        };
+        let v = Viscosity::barus(0.0);
+        for (geometry, a_w) in [(Geometry::Elliptical, 1.5), (Geometry::Line, 4.0 / PI)] {
+            let m = mu_bar_flat(geometry, law, &v, 600.0);
+            let exact = law.friction_bound(a_w).unwrap();
+            assert!(
+                m < exact && m / exact > 1.0 - 7.5e-6,
+                "{geometry:?}: {m} vs {exact}"
+            );
+        }
+        // Unsaturated (x_c = 1e-3, tau_E <= 1e-3 << tau_L0): the limit changes nothing
+        // measurable ((tau_E/tau_L)^2 / 2 <= 5.6e-6 relative).
+        let plain = mu_bar_flat(Geometry::Elliptical, ShearLaw::Eyring, &v, (1e-3f64).ln());
+        let limited = mu_bar_flat(Geometry::Elliptical, law, &v, (1e-3f64).ln());
+        assert!((limited / plain - 1.0).abs() < 6e-6 && limited < plain);
+    }
+
+    #[test]
     fn alpha_e_of_barus_is_alpha_bar() {
         // ln eta is linear in P: the central difference is exact up to round-off.
         assert!((alpha_e(&Viscosity::barus(21.6)) - 21.6).abs() < 1e-8);

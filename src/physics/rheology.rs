@@ -124,6 +124,21 @@ impl ShearLaw {
         matches!(self, ShearLaw::Eyring)
     }
 
+    /// The bound on the reduced friction of Eq. (8) that the limit sets for any pressure
+    /// field, `mu-bar <= Lambda-bar + (tau_L0 / tau0) A / W` (`tau_m < tau_L0 + Lambda p`
+    /// integrated over the pressurised area `A`, load `W = int P dA`), for the ratio
+    /// `A / W` (dimensionless: 3/2 for the Hertzian ellipse, `4 / pi` for the Hertzian line);
+    /// reached when the whole contact is saturated. `None` without a limit.
+    pub fn friction_bound(self, area_over_load: f64) -> Option<f64> {
+        match self {
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => Some(lambda_bar + tau_l0_bar * area_over_load),
+            _ => None,
+        }
+    }
+
     /// `tau_L / tau0` at pressure `P` (the cavitated and dry zones, `P <= 0`, at `tau_L0`).
     #[inline]
     fn limit(tau_l0_bar: f64, lambda_bar: f64, p: f64) -> f64 {
