@@ -51,6 +51,9 @@ pub enum Command {
     /// Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on the refined friction
     /// formula fitted to them, cross-validated by figure.
     Mastercurve(TargetArgs),
+    /// Beyond the paper: Fig. 4's cases with a limiting shear stress at several Lambda-bar,
+    /// and the form of their friction curve.
+    Lss(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
     Predict(Box<PredictArgs>),

@@ -4,6 +4,7 @@
 
 pub mod fig8;
 pub mod figure;
+pub mod lss;
 pub mod mastercurve;
 pub mod tables;
 
@@ -52,6 +53,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig7", description: "Sliding mu-bar vs tau_c, mineral oil A, Rx/Ry = 1/2, 1/5 and the line contact at the Table 3 cases", kind: Kind::Computed, default_level: Some(7) },
     Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
     Target { name: "mastercurve", description: "Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on a refined formula fitted to them, cross-validated by figure", kind: Kind::Computed, default_level: None },
+    Target { name: "lss", description: "Beyond the paper: Fig. 4's cases with a limiting shear stress at Lambda-bar 5-40, and the form of their curve", kind: Kind::Computed, default_level: None },
 ];
 
 /// Looks a target up.
@@ -74,6 +76,7 @@ pub fn jobs(name: &str, ctx: &Context) -> Result<Vec<Job>, String> {
     match t.name {
         "table1" | "table2" | "table3" | "fig8" => Ok(Vec::new()),
         "table4" => tables::table4_jobs(),
+        "lss" => lss::jobs(ctx),
         "mastercurve" => {
             // The figures' own cases, each solve once.
             let mut seen = std::collections::HashSet::new();
@@ -102,6 +105,7 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "table4" => tables::table4(ctx)?,
         "fig8" => fig8::build(ctx)?,
         "mastercurve" => mastercurve::build(ctx)?,
+        "lss" => lss::build(ctx)?,
         figure_name => figure::build(figure_name, t.default_level, ctx)?,
     };
     if !built.files.iter().any(|f| f.ends_with(SUFFIX)) {
