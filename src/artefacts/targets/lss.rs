@@ -77,7 +77,8 @@ fn eyring_selection(ctx: &Context) -> Result<(Sweep, Vec<usize>), String> {
 /// 3-valued axes of the grid, so each `Lambda-bar` spans every value of every axis): 243
 /// limited solves at the working level, as many as Fig. 4, where the whole grid at every
 /// `Lambda-bar` would take four times as long. At the snapshot profile only every second of
-/// those (31 limited solves on Fig. 4's sample of 61).
+/// those: 31 limited solves on Fig. 4's sample of 61, whose Eyring solves `repro check` has
+/// already made for Fig. 4 (76 s at level 5 measured while a level-7 run shared the two cores).
 fn picked(i: usize, j: usize, ctx: &Context) -> bool {
     let k = LAMBDA_BARS.len();
     if ctx.stride > 1 {
