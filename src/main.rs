@@ -23,6 +23,7 @@ fn main() -> ExitCode {
         Command::Fig8(a) => cli::target::one("fig8", &a),
         Command::Mastercurve(a) => cli::target::one("mastercurve", &a),
         Command::Thermal(a) => cli::target::one("thermal", &a),
+        Command::Lss(a) => cli::target::one("lss", &a),
         Command::All(a) => cli::target::all(&a),
         Command::Run(a) => cli::target::study(&a),
         Command::List => cli::target::list(),

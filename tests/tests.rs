@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod line_contact;
+mod lss;
 mod mastercurve;
 mod point_contact;
 mod predict;

@@ -12,6 +12,7 @@ pub mod csv;
 pub mod fit;
 pub mod html;
 pub mod line_cases;
+pub mod lss_curve;
 pub mod measured;
 pub mod merge;
 pub mod oracle;

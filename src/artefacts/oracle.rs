@@ -12,7 +12,7 @@ pub fn point_flat(problem: &Problem, h_central: f64) -> f64 {
     let ln_x = ln_couette_centre(problem.eyring_n_s(), &problem.viscosity, h_central);
     mu_bar_flat(
         Geometry::Elliptical,
-        problem.rheology,
+        problem.shear,
         &problem.viscosity,
         ln_x,
     )
@@ -21,7 +21,7 @@ pub fn point_flat(problem: &Problem, h_central: f64) -> f64 {
 /// `mu-bar_flat` of a line contact whose central film is `h_central` (`H = h Rx / a^2`).
 pub fn line_flat(problem: &LineProblem, h_central: f64) -> f64 {
     let ln_x = ln_couette_centre(problem.eyring_n_s(), &problem.viscosity, h_central);
-    mu_bar_flat(Geometry::Line, problem.rheology, &problem.viscosity, ln_x)
+    mu_bar_flat(Geometry::Line, problem.shear, &problem.viscosity, ln_x)
 }
 
 /// The central film `H` of the formula `tau_c` is built on, in the solver's units: Eq. (10)

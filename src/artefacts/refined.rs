@@ -49,7 +49,7 @@ impl Features {
         Features {
             flat_nominal: mu_bar_flat(
                 Geometry::Elliptical,
-                problem.rheology,
+                problem.shear,
                 &problem.viscosity,
                 ln_x,
             ),
@@ -63,7 +63,7 @@ impl Features {
         let h = line_nominal_film(problem);
         let ln_x = ln_couette_centre(problem.eyring_n_s(), &problem.viscosity, h);
         Features {
-            flat_nominal: mu_bar_flat(Geometry::Line, problem.rheology, &problem.viscosity, ln_x),
+            flat_nominal: mu_bar_flat(Geometry::Line, problem.shear, &problem.viscosity, ln_x),
             film_nominal: h,
             ln_l: problem.groups.l.ln(),
         }

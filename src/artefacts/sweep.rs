@@ -11,7 +11,8 @@
 //! [physics]
 //! viscosity = "roelands"          # barus | roelands
 //! density = "dowson-higginson"    # incompressible | dowson-higginson
-//! rheology = "eyring"             # eyring | newtonian
+//! rheology = "eyring"             # eyring | newtonian, or a limiting shear stress:
+//!                                 # { eyring-lss = { lambda = 0.08, tau_l0_pa = 5e6 } }
 //! [grid]
 //! alpha_per_gpa = [18.0]          # or lubricant = ["mineral-oil-a"] with temperature_c
 //! eta0_mpa_s = [12.0]

@@ -54,6 +54,9 @@ pub enum Command {
     /// Beyond the paper: the shear-heating correction of Figs. 4-6, isothermal against
     /// thermal mu-bar, and where the paper's isothermal assumption holds.
     Thermal(TargetArgs),
+    /// Beyond the paper: Fig. 4's cases with a limiting shear stress at several Lambda-bar,
+    /// and the form of their friction curve.
+    Lss(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
     Predict(Box<PredictArgs>),
@@ -226,6 +229,9 @@ pub enum DensityArg {
 pub enum RheologyArg {
     Eyring,
     Newtonian,
+    /// Eyring with a limiting shear stress tau_L = tau_L0 + Lambda p (--lambda-lss, --tau-l0;
+    /// beyond the paper).
+    EyringLss,
 }
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
@@ -310,6 +316,14 @@ pub struct SolveArgs {
     /// Rheology.
     #[arg(long, value_enum)]
     pub rheology: Option<RheologyArg>,
+    /// Limiting shear stress's pressure slope Lambda = d tau_L / dp (with --rheology
+    /// eyring-lss; e.g. 0.08).
+    #[arg(long = "lambda-lss")]
+    pub lambda_lss: Option<f64>,
+    /// Limiting shear stress at ambient pressure tau_L0, Pa (with --rheology eyring-lss;
+    /// must be > 0).
+    #[arg(long = "tau-l0")]
+    pub tau_l0: Option<f64>,
 
     /// Solve a line contact (1-D solver, Fig. 7) with the same flags; --ry and --d do not
     /// apply. The load is given by --ph (physical form) or by the line-contact M.

@@ -12,7 +12,7 @@ use repro::physics::case::{
 use repro::physics::density::DensityLaw;
 use repro::physics::line_contact::{LineDimensionlessCase, LinePhysicalCase, LineProblem};
 use repro::physics::lubricant::{LubricantError, LubricantTable};
-use repro::physics::rheology::Rheology;
+use repro::physics::rheology::{LimitingShearStress, Rheology};
 use repro::physics::viscosity::ViscosityLaw;
 use repro::solver::grid::Domain;
 use repro::solver::{line, point};
@@ -68,11 +68,32 @@ fn need(v: Option<f64>, flag: &str) -> Result<f64> {
     v.ok_or_else(|| anyhow!("{flag}: required"))
 }
 
+/// The rheology flags: `--rheology eyring-lss` needs `--lambda-lss` and `--tau-l0`, which
+/// mean nothing with another rheology.
+fn rheology(
+    rheology: Option<RheologyArg>,
+    lambda_lss: Option<f64>,
+    tau_l0: Option<f64>,
+) -> Result<Option<Rheology>> {
+    Ok(match rheology {
+        Some(RheologyArg::EyringLss) => Some(Rheology::EyringLss(LimitingShearStress {
+            lambda: need(lambda_lss, "--lambda-lss (with --rheology eyring-lss)")?,
+            tau_l0_pa: need(tau_l0, "--tau-l0 (with --rheology eyring-lss)")?,
+        })),
+        _ if lambda_lss.is_some() || tau_l0.is_some() => {
+            bail!("--lambda-lss and --tau-l0 need --rheology eyring-lss")
+        }
+        Some(RheologyArg::Eyring) => Some(Rheology::Eyring),
+        Some(RheologyArg::Newtonian) => Some(Rheology::Newtonian),
+        None => None,
+    })
+}
+
 /// The physics flags over `defaults`.
 pub fn physics(
     viscosity: Option<ViscosityArg>,
     density: Option<DensityArg>,
-    rheology: Option<RheologyArg>,
+    rheology: Option<Rheology>,
     defaults: Physics,
 ) -> Physics {
     Physics {
@@ -86,11 +107,7 @@ pub fn physics(
             Some(DensityArg::DowsonHigginson) => DensityLaw::DowsonHigginson,
             None => defaults.density,
         },
-        rheology: match rheology {
-            Some(RheologyArg::Eyring) => Rheology::Eyring,
-            Some(RheologyArg::Newtonian) => Rheology::Newtonian,
-            None => defaults.rheology,
-        },
+        rheology: rheology.unwrap_or(defaults.rheology),
     }
 }
 
@@ -131,7 +148,8 @@ impl SolveArgs {
         } else {
             Physics::figs_4_to_7()
         };
-        let physics = physics(self.viscosity, self.density, self.rheology, defaults);
+        let rheology = rheology(self.rheology, self.lambda_lss, self.tau_l0)?;
+        let physics = physics(self.viscosity, self.density, rheology, defaults);
         Ok(Case { spec, physics })
     }
 

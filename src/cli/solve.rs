@@ -10,6 +10,7 @@ use repro::artefacts::csv::{num, table, write_atomic};
 use repro::physics::case::Problem;
 use repro::physics::line_contact::{LineFilmFormula, LineProblem};
 use repro::physics::lubricant::LubricantTable;
+use repro::physics::rheology::ShearLaw;
 use repro::solver::line::{self, LineSolution};
 use repro::solver::point::{self, PointSolution};
 use serde_json::json;
@@ -83,10 +84,41 @@ fn write_fields<const N: usize>(
     write_atomic(path, &text).with_context(|| format!("--fields: cannot write {}", path.display()))
 }
 
+/// The limiting shear stress's line of a summary (empty without one): the dimensionless
+/// limit and the friction bound it sets on the Hertzian contact (`A / W` the area over the
+/// load: 3/2 for an ellipse, `4 / pi` for a line).
+fn limit_text(law: ShearLaw, area_over_load: f64) -> String {
+    match (law, law.friction_bound(area_over_load)) {
+        (
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            },
+            Some(bound),
+        ) => format!(
+            "limit       tau_L/tau0 = {} + {} P; saturated Hertzian contact: mu-bar = {}\n",
+            short(tau_l0_bar),
+            short(lambda_bar),
+            short(bound)
+        ),
+        _ => String::new(),
+    }
+}
+
+/// Four decimals, or four significant digits in exponent form beyond 1e6.
+fn short(v: f64) -> String {
+    if v.abs() < 1e6 {
+        format!("{v:.4}")
+    } else {
+        format!("{v:.4e}")
+    }
+}
+
 fn point_text(problem: &Problem, s: &PointSolution) -> String {
     let g = &problem.groups;
     let ph = problem.physics();
     let tau_c = problem.tau_c();
+    let limit = limit_text(problem.shear, 1.5);
     format!(
         "case        M = {:.4}, L = {:.4}, S-bar = {:.4e}, D = {:.4}, S = {}\n\
          groups      alpha-bar = {:.4}, lambda = {:.4e}, kappa = {:.4}, N = {:.4e}\n\
@@ -129,7 +161,7 @@ fn point_text(problem: &Problem, s: &PointSolution) -> String {
         s.friction.total(),
         tau_c,
         (tau_c / 5.0).asinh(),
-    )
+    ) + &limit
 }
 
 /// `repro solve --line`: the line contact (Fig. 7) from the same flags.
@@ -184,6 +216,7 @@ fn line_text(problem: &LineProblem, s: &LineSolution) -> String {
     let g = &problem.groups;
     let tau_c = problem.tau_c();
     let rolling = rolling_text(s.friction.rolling);
+    let limit = limit_text(problem.shear, 4.0 / std::f64::consts::PI);
     format!(
         "line case   M = {:.4}, L = {:.4}, S-bar = {:.4e}, S = {}\n\
          groups      alpha-bar = {:.4}, lambda = {:.4e}, N = {:.4e}\n\
@@ -198,5 +231,5 @@ fn line_text(problem: &LineProblem, s: &LineSolution) -> String {
         s.friction.sliding, rolling, s.friction.total(),
         tau_c, (tau_c / 5.0).asinh(),
         s.info.cycles, s.info.residual(), s.info.load_error, s.info.seconds,
-    )
+    ) + &limit
 }

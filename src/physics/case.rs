@@ -5,12 +5,12 @@
 use super::density::{Density, DensityLaw};
 use super::hertz::Hertz;
 use super::lubricant::{LubricantError, LubricantState, LubricantTable};
-use super::rheology::Rheology;
+use super::rheology::{Rheology, ShearLaw};
 use super::viscosity::{Viscosity, ViscosityLaw};
 use serde::{Deserialize, Serialize};
 
 /// The physics a case asks for; the solver composes only these.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 #[serde(default, deny_unknown_fields)]
 pub struct Physics {
     /// Viscosity-pressure law.
@@ -289,6 +289,36 @@ impl Groups {
     }
 }
 
+/// The dimensionless shear law of a case's rheology, point or line contact: `tau0_over_ph`
+/// is `tau0 / p_H` (infinite when the case has no Eyring stress, `S-bar = 0`), `ph_pa` the
+/// physical `p_H` in Pa (NaN when a dimensionless case does not give it). The limiting
+/// shear stress needs both: its `tau_L0` is in Pa.
+pub(super) fn shear_law(
+    rheology: Rheology,
+    tau0_over_ph: f64,
+    ph_pa: f64,
+) -> Result<ShearLaw, CaseError> {
+    let Rheology::EyringLss(lss) = rheology else {
+        return Ok(ShearLaw::of_plain(rheology).expect("a rheology without parameters"));
+    };
+    let lss = lss
+        .checked()
+        .map_err(|(name, message)| field(name, message))?;
+    if !tau0_over_ph.is_finite() {
+        return Err(field(
+            "s-bar",
+            "the limiting shear stress needs an Eyring stress: S-bar > 0",
+        ));
+    }
+    if !ph_pa.is_finite() {
+        return Err(field(
+            "ph",
+            "the limiting shear stress (tau_L0 in Pa) needs the physical p_H (Pa) in the dimensionless form",
+        ));
+    }
+    Ok(lss.shear_law(tau0_over_ph * ph_pa, ph_pa))
+}
+
 /// `N S` of a point or line contact: the Couette stress argument of Eq. (4) is
 /// `N S eta_bar / H`, so the solvers take this product once.
 pub(super) fn eyring_n_s(n: f64, slip: f64) -> f64 {
@@ -308,8 +338,10 @@ pub struct Problem {
     pub viscosity: Viscosity,
     /// Density law.
     pub density: Density,
-    /// Rheology.
+    /// Rheology, as the case states it.
     pub rheology: Rheology,
+    /// The rheology's dimensionless law, what the solver evaluates.
+    pub shear: ShearLaw,
     /// The Hertz scales (physical for a physical case; in units of `Rx`, `E'` for a
     /// dimensionless one).
     pub hertz: Hertz,
@@ -346,7 +378,8 @@ impl Problem {
         }
         let hz = Hertz::from_ph(ph, rx, ry, e_prime);
         let groups = Groups::new(&hz, eta0 * 2.0 * um, alpha, 1.0 / tau0, slip);
-        Ok(Self::assemble(groups, hz, physics, eta0, alpha, ph))
+        let shear = shear_law(physics.rheology, tau0 / ph, ph)?;
+        Ok(Self::assemble(groups, hz, physics, shear, eta0, alpha, ph))
     }
 
     fn from_dimensionless(d: &DimensionlessCase, physics: Physics) -> Result<Self, CaseError> {
@@ -372,8 +405,16 @@ impl Problem {
         let tau0_inv = if d.s_bar > 0.0 { d.s_bar / slip } else { 0.0 };
         let groups = Groups::new(&hz, 1.0, l, tau0_inv, slip);
         let (ph_pa, eta0) = physical_scales(physics, d.ph_pa, d.eta0_pa_s)?;
-        let mut problem =
-            Self::assemble(groups, hz, physics, eta0, groups.alpha_bar / ph_pa, ph_pa);
+        let shear = shear_law(physics.rheology, 1.0 / (tau0_inv * hz.ph), ph_pa)?;
+        let mut problem = Self::assemble(
+            groups,
+            hz,
+            physics,
+            shear,
+            eta0,
+            groups.alpha_bar / ph_pa,
+            ph_pa,
+        );
         if physics.viscosity == ViscosityLaw::Barus {
             problem.viscosity = Viscosity::barus(groups.alpha_bar);
         }
@@ -384,6 +425,7 @@ impl Problem {
         groups: Groups,
         hertz: Hertz,
         physics: Physics,
+        shear: ShearLaw,
         eta0: f64,
         alpha: f64,
         ph: f64,
@@ -398,6 +440,7 @@ impl Problem {
             },
             density: Density::new(physics.density, ph),
             rheology: physics.rheology,
+            shear,
             hertz,
         }
     }

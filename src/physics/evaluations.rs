@@ -27,10 +27,13 @@ pub enum Effect {
     Eyring,
     /// The rolling (Poiseuille) part of the friction, one count per friction evaluation.
     RollingFriction,
+    /// The limiting shear stress's saturation of the Eyring stress (plain Eyring is the
+    /// alternative).
+    LimitingShearStress,
 }
 
 /// Number of [`Effect`]s.
-pub const EFFECTS: usize = 4;
+pub const EFFECTS: usize = 5;
 
 /// Evaluations counted per effect, indexed by `Effect as usize`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -73,7 +76,7 @@ mod tests {
     use crate::physics::case::{Case, DimensionlessCase, Physics, Problem, Spec};
     use crate::physics::density::DensityLaw;
     use crate::physics::lubricant::LubricantTable;
-    use crate::physics::rheology::Rheology;
+    use crate::physics::rheology::{LimitingShearStress, Rheology};
     use crate::physics::viscosity::ViscosityLaw;
     use crate::solver::point::{solve, Params};
 
@@ -161,6 +164,7 @@ mod tests {
                 Effect::DowsonHigginson,
                 Effect::Eyring,
                 Effect::RollingFriction,
+                Effect::LimitingShearStress,
             ] {
                 let n = counts.of(other);
                 if other == effect {
@@ -176,7 +180,7 @@ mod tests {
     }
 
     #[test]
-    fn the_paper_physics_evaluates_every_effect() {
+    fn the_paper_physics_evaluates_every_effect_but_the_limit() {
         let (counts, cycles) = evaluated_with_cycles(Physics::figs_4_to_7(), true);
         for effect in [
             Effect::Roelands,
@@ -186,6 +190,17 @@ mod tests {
         ] {
             assert!(counts.of(effect) > 0, "{effect:?}");
         }
+        // The paper's Eyring never touches the limiting shear stress; a case that asks for it
+        // evaluates it (the control that its counter is wired in).
+        assert_eq!(counts.of(Effect::LimitingShearStress), 0);
+        let lss = Physics {
+            rheology: Rheology::EyringLss(LimitingShearStress {
+                lambda: 0.05,
+                tau_l0_pa: 2e6,
+            }),
+            ..Physics::figs_4_to_7()
+        };
+        assert!(evaluated(lss, false).of(Effect::LimitingShearStress) > 0);
         // The rolling friction is one pass over the solution after each finest cycle (the
         // stopping rule watches it) and one over the converged solution: never per sweep.
         assert_eq!(counts.of(Effect::RollingFriction), cycles as u64 + 1);

@@ -17,7 +17,7 @@
 //! `mu-bar_flat = 1.5 ln(2 x_c) - 0.5 alpha-bar`: at a given `tau_c` friction also falls with
 //! the pressure-viscosity coefficient, which is why one curve in `tau_c` cannot hold exactly.
 
-use super::rheology::Rheology;
+use super::rheology::ShearLaw;
 use super::viscosity::Viscosity;
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -40,13 +40,21 @@ pub enum Geometry {
     Line,
 }
 
-/// The mean shear stress `tau_m / tau0` of Eq. (4) for a Couette argument given by its
-/// logarithm (`ln x`), without overflow however large `x` is.
-fn mean_stress(rheology: Rheology, ln_x: f64) -> f64 {
+/// The mean shear stress `tau_m / tau0` of Eq. (4) at pressure `P` for a Couette argument
+/// given by its logarithm (`ln x`), without overflow however large `x` is; with a limiting
+/// shear stress, the Eyring stress saturated at `tau_L(P)`.
+fn mean_stress(rheology: ShearLaw, ln_x: f64, p: f64) -> f64 {
+    let eyring = || {
+        if ln_x > LN_X_ASYMPTOTIC {
+            ln_x + std::f64::consts::LN_2
+        } else {
+            ln_x.exp().asinh()
+        }
+    };
     match rheology {
-        Rheology::Eyring if ln_x > LN_X_ASYMPTOTIC => ln_x + std::f64::consts::LN_2,
-        Rheology::Eyring => ln_x.exp().asinh(),
-        Rheology::Newtonian => ln_x.exp(),
+        ShearLaw::Newtonian => ln_x.exp(),
+        ShearLaw::Eyring => eyring(),
+        ShearLaw::EyringLss { .. } => rheology.saturate(eyring(), p),
     }
 }
 
@@ -67,12 +75,18 @@ fn simpson(a: f64, b: f64, f: impl Fn(f64) -> f64) -> f64 {
 /// `ln_x_centre` (so that `eta_bar(1)` of 1e30 does not overflow).
 pub fn mu_bar_flat(
     geometry: Geometry,
-    rheology: Rheology,
+    rheology: ShearLaw,
     viscosity: &Viscosity,
     ln_x_centre: f64,
 ) -> f64 {
     let ln_eta_ph = viscosity.ln_eta_bar(1.0);
-    let stress = |p: f64| mean_stress(rheology, ln_x_centre + viscosity.ln_eta_bar(p) - ln_eta_ph);
+    let stress = |p: f64| {
+        mean_stress(
+            rheology,
+            ln_x_centre + viscosity.ln_eta_bar(p) - ln_eta_ph,
+            p,
+        )
+    };
     match geometry {
         Geometry::Elliptical => 3.0 * simpson(0.0, 1.0, |p| stress(p) * p),
         Geometry::Line => {
@@ -111,9 +125,9 @@ mod tests {
         // line. Simpson is exact on the polynomial weight; the cosine weight to ~1e-13.
         let v = Viscosity::barus(0.0);
         let x: f64 = 7.0;
-        let e = mu_bar_flat(Geometry::Elliptical, Rheology::Eyring, &v, x.ln());
+        let e = mu_bar_flat(Geometry::Elliptical, ShearLaw::Eyring, &v, x.ln());
         assert!((e / (1.5 * x.asinh()) - 1.0).abs() < 1e-12, "{e}");
-        let l = mu_bar_flat(Geometry::Line, Rheology::Eyring, &v, x.ln());
+        let l = mu_bar_flat(Geometry::Line, ShearLaw::Eyring, &v, x.ln());
         assert!((l / (4.0 / PI * x.asinh()) - 1.0).abs() < 1e-10, "{l}");
     }
 
@@ -125,12 +139,12 @@ mod tests {
         let alpha = 30.0;
         let v = Viscosity::barus(alpha);
         let ln_xc = 60.0;
-        let m = mu_bar_flat(Geometry::Elliptical, Rheology::Eyring, &v, ln_xc);
+        let m = mu_bar_flat(Geometry::Elliptical, ShearLaw::Eyring, &v, ln_xc);
         let asymptote = 1.5 * (ln_xc + std::f64::consts::LN_2) - 0.5 * alpha;
         assert!((m / asymptote - 1.0).abs() < 1e-12, "{m} vs {asymptote}");
         // Newtonian: 3 int x_c e^{alpha (P - 1)} P dP, in closed form.
         let xc: f64 = 0.01;
-        let n = mu_bar_flat(Geometry::Elliptical, Rheology::Newtonian, &v, xc.ln());
+        let n = mu_bar_flat(Geometry::Elliptical, ShearLaw::Newtonian, &v, xc.ln());
         let a: f64 = alpha;
         let exact = 3.0 * xc * (1.0 / a - (1.0 - (-a).exp()) / (a * a));
         assert!((n / exact - 1.0).abs() < 1e-8, "{n} vs {exact}");
@@ -144,7 +158,7 @@ mod tests {
         // error falls 16-fold per halving).
         let v = Viscosity::roelands(0.266, 35e-9, 3e9);
         let ln_xc = 10.0;
-        let full = mu_bar_flat(Geometry::Elliptical, Rheology::Eyring, &v, ln_xc);
+        let full = mu_bar_flat(Geometry::Elliptical, ShearLaw::Eyring, &v, ln_xc);
         let ln_eta = v.ln_eta_bar(1.0);
         let h = 1.0 / (INTERVALS / 2) as f64;
         let half: f64 = (0..=INTERVALS / 2)
@@ -157,7 +171,7 @@ mod tests {
                 } else {
                     2.0
                 };
-                w * mean_stress(Rheology::Eyring, ln_xc + v.ln_eta_bar(p) - ln_eta) * p
+                w * mean_stress(ShearLaw::Eyring, ln_xc + v.ln_eta_bar(p) - ln_eta, p) * p
             })
             .sum::<f64>()
             * 3.0
@@ -165,6 +179,34 @@ mod tests {
             / 3.0;
         assert!((full / half - 1.0).abs() < 1e-7, "{full} vs {half}");
         assert!(alpha_e(&v) > 60.0 && alpha_e(&v) < 70.0, "{}", alpha_e(&v));
+    }
+
+    #[test]
+    fn a_saturated_hertzian_contact_carries_the_limit() {
+        // The exact limit: with the whole Hertzian contact saturated, mu-bar =
+        // Lambda-bar + (tau_L0/tau0) A/W, A/W = 3/2 for the ellipse and 4/pi for the line.
+        // ln x_c = 600 with constant viscosity: tau_E = 600.7 everywhere against tau_L <= 2.3,
+        // so tau_m = tau_L (1 - r^-1/2 ...) with r >= 6.8e4: 7.4e-6 relative at most. The
+        // remaining integrand is a polynomial in P for the ellipse (Simpson exact) and
+        // (a + b cos t) cos t for the line (Simpson's error ~ 1e-13).
+        let law = ShearLaw::EyringLss {
+            tau_l0_bar: 0.3,
+            lambda_bar: 2.0,
+        };
+        let v = Viscosity::barus(0.0);
+        for (geometry, a_w) in [(Geometry::Elliptical, 1.5), (Geometry::Line, 4.0 / PI)] {
+            let m = mu_bar_flat(geometry, law, &v, 600.0);
+            let exact = law.friction_bound(a_w).unwrap();
+            assert!(
+                m < exact && m / exact > 1.0 - 7.5e-6,
+                "{geometry:?}: {m} vs {exact}"
+            );
+        }
+        // Unsaturated (x_c = 1e-3, tau_E <= 1e-3 << tau_L0): the limit changes nothing
+        // measurable ((tau_E/tau_L)^2 / 2 <= 5.6e-6 relative).
+        let plain = mu_bar_flat(Geometry::Elliptical, ShearLaw::Eyring, &v, (1e-3f64).ln());
+        let limited = mu_bar_flat(Geometry::Elliptical, law, &v, (1e-3f64).ln());
+        assert!((limited / plain - 1.0).abs() < 6e-6 && limited < plain);
     }
 
     #[test]
@@ -176,7 +218,7 @@ mod tests {
     #[test]
     fn huge_arguments_do_not_overflow() {
         let v = Viscosity::barus(70.0);
-        let m = mu_bar_flat(Geometry::Line, Rheology::Eyring, &v, 800.0);
+        let m = mu_bar_flat(Geometry::Line, ShearLaw::Eyring, &v, 800.0);
         assert!(m.is_finite() && m > 500.0, "{m}");
     }
 }

@@ -11,12 +11,12 @@
 //! `H = H0 + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
 
 use super::case::{
-    eyring_n_s, field, hertzian_pressure, physical_scales, positive, slip_in_range, CaseError,
-    LubricantSpec, PhysicalCase, Physics,
+    eyring_n_s, field, hertzian_pressure, physical_scales, positive, shear_law, slip_in_range,
+    CaseError, LubricantSpec, PhysicalCase, Physics,
 };
 use super::density::Density;
 use super::lubricant::LubricantTable;
-use super::rheology::Rheology;
+use super::rheology::{Rheology, ShearLaw};
 use super::viscosity::{Viscosity, ViscosityLaw};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -255,30 +255,32 @@ fn f_g_over_sinh(g: f64) -> f64 {
 
 impl LineEyringFlow {
     /// Dimensionless mean shear stress `tau_m / tau0` for the Couette argument
-    /// `x = eta du / (h tau0)` and `G`: `asinh(x G / sinh G)` (exact), `asinh(x)`
-    /// (perturbation), `x` (Newtonian, where Couette and Poiseuille superpose exactly).
-    pub fn mean_shear_stress(self, rheology: Rheology, x: f64, g: f64) -> f64 {
-        match (rheology, self) {
-            (Rheology::Newtonian, _) => x,
-            (Rheology::Eyring, LineEyringFlow::Exact) => (x * g_over_sinh(g)).asinh(),
-            (Rheology::Eyring, LineEyringFlow::Perturbation) => x.asinh(),
+    /// `x = eta du / (h tau0)`, `G` and pressure `P`: `asinh(x G / sinh G)` (exact),
+    /// `asinh(x)` (perturbation), `x` (Newtonian, where Couette and Poiseuille superpose
+    /// exactly). The limiting-stress law has no closed form across a film whose stress varies
+    /// by `2 G`; it is taken in the perturbation form, as the point contact takes it.
+    pub fn mean_shear_stress(self, law: ShearLaw, x: f64, g: f64, p: f64) -> f64 {
+        match (law, self) {
+            (ShearLaw::Eyring, LineEyringFlow::Exact) => (x * g_over_sinh(g)).asinh(),
+            _ => law.mean_shear_stress(x, p),
         }
     }
 
-    /// Poiseuille conductance `H^3 / eta_eff` for film `h`, viscosity `eta`, `n_s = N S` and
-    /// `G`, written without overflow however large `eta` is:
+    /// Poiseuille conductance `H^3 / eta_eff` for film `h`, viscosity `eta`, `n_s = N S`,
+    /// `G` and pressure `P`, written without overflow however large `eta` is:
     /// exact `H^2 hypot(F H / eta, N S F G / sinh G)`; perturbation `H^2 hypot(H / eta, N S)`;
-    /// Newtonian `H^3 / eta`. Zero where `h <= 0`.
-    pub fn conductance(self, rheology: Rheology, h: f64, eta: f64, n_s: f64, g: f64) -> f64 {
+    /// Newtonian `H^3 / eta`; the limiting-stress law in the perturbation form. Zero where
+    /// `h <= 0`.
+    pub fn conductance(self, law: ShearLaw, h: f64, eta: f64, n_s: f64, g: f64, p: f64) -> f64 {
         if h <= 0.0 {
             return 0.0;
         }
-        match (rheology, self) {
-            (Rheology::Newtonian, _) => h * h * h / eta,
-            (Rheology::Eyring, LineEyringFlow::Exact) => {
+        match (law, self) {
+            (ShearLaw::Eyring, LineEyringFlow::Exact) => {
                 h * h * (eyring_f(g) * h / eta).hypot(n_s * f_g_over_sinh(g))
             }
-            (Rheology::Eyring, LineEyringFlow::Perturbation) => h * h * (h / eta).hypot(n_s),
+            (ShearLaw::Eyring, LineEyringFlow::Perturbation) => h * h * (h / eta).hypot(n_s),
+            _ => law.conductance_x(h, eta, n_s, p),
         }
     }
 }
@@ -365,8 +367,10 @@ pub struct LineProblem {
     pub viscosity: Viscosity,
     /// Density law.
     pub density: Density,
-    /// Rheology.
+    /// Rheology, as the case states it.
     pub rheology: Rheology,
+    /// The rheology's dimensionless law, what the solver evaluates.
+    pub shear: ShearLaw,
     /// Which Eyring flow (exact by default).
     pub eyring_flow: LineEyringFlow,
     /// Hertz scales (physical for a physical case; units `Rx = E' = 1`, `U = 1` for a
@@ -393,7 +397,10 @@ impl LineProblem {
         }
         let hertz = LineHertz::from_ph(ph, rx, e_prime);
         let groups = LineGroups::new(&hertz, eta0 * 2.0 * um, alpha, 1.0 / tau0, slip);
-        Ok(Self::assemble(groups, hertz, physics, eta0, alpha, ph))
+        let shear = shear_law(physics.rheology, tau0 / ph, ph)?;
+        Ok(Self::assemble(
+            groups, hertz, physics, shear, eta0, alpha, ph,
+        ))
     }
 
     /// From the Moes groups. In units `Rx = E' = 1` and `U = eta0 u_s / (E' Rx) = 1` the load
@@ -415,10 +422,12 @@ impl LineProblem {
         let tau0_inv = if c.s_bar > 0.0 { c.s_bar / slip } else { 0.0 };
         let groups = LineGroups::new(&hertz, 1.0, l, tau0_inv, slip);
         let (ph_pa, eta0) = physical_scales(physics, c.ph_pa, c.eta0_pa_s)?;
+        let shear = shear_law(physics.rheology, 1.0 / (tau0_inv * hertz.ph), ph_pa)?;
         let mut problem = Self::assemble(
             groups,
             hertz,
             physics,
+            shear,
             eta0,
             groups.alpha_bar / ph_pa,
             ph_pa,
@@ -433,6 +442,7 @@ impl LineProblem {
         groups: LineGroups,
         hertz: LineHertz,
         physics: Physics,
+        shear: ShearLaw,
         eta0: f64,
         alpha: f64,
         ph: f64,
@@ -442,6 +452,7 @@ impl LineProblem {
             viscosity: Viscosity::new(physics.viscosity, eta0, alpha, ph),
             density: Density::new(physics.density, ph),
             rheology: physics.rheology,
+            shear,
             eyring_flow: LineEyringFlow::default(),
             hertz,
         }
@@ -594,20 +605,20 @@ pub(crate) mod tests {
         }
         // The exact flow tends to the perturbation form as G -> 0, for any Couette stress.
         let (e, p) = (LineEyringFlow::Exact, LineEyringFlow::Perturbation);
-        let r = Rheology::Eyring;
+        let r = ShearLaw::Eyring;
         for (h, eta, ns) in [(0.02, 1e20, 1e-3), (0.5, 3.0, 0.01)] {
-            let ce = e.conductance(r, h, eta, ns, 1e-6);
-            let cp = p.conductance(r, h, eta, ns, 1e-6);
+            let ce = e.conductance(r, h, eta, ns, 1e-6, 1.0);
+            let cp = p.conductance(r, h, eta, ns, 1e-6, 1.0);
             assert!((ce / cp - 1.0).abs() < 1e-10);
         }
         // Huge G and viscosity stay finite; the flux conductance * G saturates (-> 3 h^2 N S).
-        let c = e.conductance(r, 0.01, 1e25, 1e-3, 1e4);
+        let c = e.conductance(r, 0.01, 1e25, 1e-3, 1e4, 1.0);
         assert!(c.is_finite() && c > 0.0);
         // Mean stress: sinh(tau_m) = x G / sinh G.
-        let tau = e.mean_shear_stress(r, 50.0, 2.0);
+        let tau = e.mean_shear_stress(r, 50.0, 2.0, 1.0);
         assert!((tau.sinh() - 50.0 * 2.0 / 2f64.sinh()).abs() < 1e-10);
         assert_eq!(
-            e.mean_shear_stress(Rheology::Newtonian, 3.0, 5.0),
+            e.mean_shear_stress(ShearLaw::Newtonian, 3.0, 5.0, 1.0),
             3.0,
             "Newtonian: superposition"
         );

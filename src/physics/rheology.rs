@@ -1,16 +1,36 @@
-//! Lubricant rheology: Newtonian or Eyring, through the perturbation approach of Eqs. (2)-(4)
-//! (Ehret, Dowson and Taylor 1998).
+//! Lubricant rheology: Newtonian, Eyring, or Eyring with a limiting shear stress, through the
+//! perturbation approach of Eqs. (2)-(4) (Ehret, Dowson and Taylor 1998).
 //!
 //! Every quantity is written in terms of the local Couette stress argument
 //! `x = N eta_bar S / H` (the Newtonian mean shear stress over `tau0`), so that
 //! `tau_m = asinh(x)` (Eq. 4), `cosh(tau_m) = sqrt(1 + x^2)` and `sinh(tau_m) = x`.
 //! Written this way nothing overflows even where `eta_bar` is 1e25.
+//!
+//! The perturbation approach for any flow law `eta gamma_dot = g(tau)` (stresses over
+//! `tau0` below): `tau_m = g^-1(x)`, `eta / eta_x = g'(tau_m)`, `eta / eta_y = g(tau_m) /
+//! tau_m`. Eyring is `g = sinh`. The limiting-shear-stress law ([`ShearLaw::EyringLss`],
+//! beyond the paper) saturates the Eyring stress `tau_E = asinh(x)` smoothly at
+//! `tau_L = tau_L0 + Lambda p`:
+//!
+//! `tau_m = tau_E (1 + (tau_E / tau_L)^2)^(-1/2)`, so that
+//! `g(tau) = sinh(tau (1 - (tau / tau_L)^2)^(-1/2))` for `tau < tau_L`,
+//! `g'(tau_m) = cosh(tau_E) (1 + r)^(3/2)`, `g(tau_m) / tau_m = (x / tau_E) (1 + r)^(1/2)`,
+//! `r = (tau_E / tau_L)^2`.
+//!
+//! Why this form and `n = 2`: it is the Eyring law itself wherever `tau_E << tau_L` (so the
+//! inlet and low-pressure zones are untouched), it is analytic in `x` and `P` (no kink for
+//! the Newton-Krylov finish to stumble on, unlike `min(tau_E, tau_L)`), and the Poiseuille
+//! conductances grow only like `(tau_E / tau_L)^3` in the saturated zone, a factor of tens at
+//! the paper's stresses. A larger exponent sharpens the knee at the price of a steeper
+//! conductance (`(tau_E/tau_L)^(n+1)`); `n = 1` (the harmonic mean) halves the stress already
+//! at `tau_E = tau_L`. At `tau_E = tau_L` this form gives `tau_L / sqrt 2`.
 
 use super::evaluations::{record, Effect};
 use serde::{Deserialize, Serialize};
 
-/// Which rheology a case asks for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+/// Which rheology a case asks for (the case file's and the command line's statement; the
+/// solvers consume its dimensionless [`ShearLaw`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "kebab-case")]
 pub enum Rheology {
     /// Linear viscous: the mean shear stress is `x` and the effective viscosities are `eta`.
@@ -18,41 +38,192 @@ pub enum Rheology {
     /// Eyring: `gamma_dot = (tau0 / eta) sinh(tau / tau0)`.
     #[default]
     Eyring,
+    /// Eyring saturating at a limiting shear stress `tau_L = tau_L0 + Lambda p` (module doc).
+    EyringLss(LimitingShearStress),
 }
 
-impl Rheology {
-    /// Dimensionless mean shear stress `tau_m / tau0` for the Couette argument `x`:
-    /// Eq. (4) for Eyring, `x` itself for a Newtonian fluid.
-    #[inline]
-    pub fn mean_shear_stress(self, x: f64) -> f64 {
+/// The limiting shear stress `tau_L = tau_L0 + Lambda p` (Bair and Winer's pressure-linear
+/// form), physical units.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LimitingShearStress {
+    /// Slope `Lambda = d tau_L / dp` (dimensionless), `>= 0`.
+    pub lambda: f64,
+    /// Limiting shear stress at ambient pressure `tau_L0`, Pa, `> 0` (so that the inlet,
+    /// where `p -> 0`, keeps a finite limit).
+    pub tau_l0_pa: f64,
+}
+
+impl LimitingShearStress {
+    /// `Lambda` and `tau_L0` checked: `Lambda >= 0`, `tau_L0 > 0`, both finite; the message
+    /// names the field.
+    pub fn checked(self) -> Result<Self, (&'static str, String)> {
+        if !(self.lambda >= 0.0 && self.lambda.is_finite()) {
+            return Err((
+                "lambda-lss",
+                format!("must be >= 0 and finite, got {}", self.lambda),
+            ));
+        }
+        if !(self.tau_l0_pa > 0.0 && self.tau_l0_pa.is_finite()) {
+            return Err((
+                "tau-l0",
+                format!(
+                    "must be positive and finite (Pa), got {}; a zero limit at ambient pressure \
+                     leaves the inlet with no shear strength",
+                    self.tau_l0_pa
+                ),
+            ));
+        }
+        Ok(self)
+    }
+
+    /// The dimensionless law for Eyring stress `tau0` and maximum Hertzian pressure `p_H`
+    /// (same units, any): `tau_L / tau0 = tau_L0 / tau0 + (Lambda p_H / tau0) P`.
+    pub fn shear_law(self, tau0: f64, ph: f64) -> ShearLaw {
+        ShearLaw::EyringLss {
+            tau_l0_bar: self.tau_l0_pa / tau0,
+            lambda_bar: self.lambda * ph / tau0,
+        }
+    }
+}
+
+/// The dimensionless rheology the solvers evaluate, stresses over `tau0`, pressure `P =
+/// p / p_H`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ShearLaw {
+    /// Linear viscous.
+    Newtonian,
+    /// Eyring, Eqs. (2)-(4).
+    Eyring,
+    /// Eyring saturating at `tau_L / tau0 = tau_l0_bar + lambda_bar P` (module doc).
+    EyringLss {
+        /// `tau_L0 / tau0`.
+        tau_l0_bar: f64,
+        /// `Lambda-bar = Lambda p_H / tau0`.
+        lambda_bar: f64,
+    },
+}
+
+/// The exponent `n` of the smooth saturation `tau_E (1 + (tau_E/tau_L)^n)^(-1/n)`; the
+/// closed forms below are written for `n = 2` (module doc says why).
+pub const SATURATION_EXPONENT: f64 = 2.0;
+
+impl ShearLaw {
+    /// The law of a Newtonian or Eyring rheology (which carry no parameters).
+    pub fn of_plain(rheology: Rheology) -> Option<Self> {
+        match rheology {
+            Rheology::Newtonian => Some(ShearLaw::Newtonian),
+            Rheology::Eyring => Some(ShearLaw::Eyring),
+            Rheology::EyringLss(_) => None,
+        }
+    }
+
+    /// Whether the law is Eyring's (with or without a limit): the Poiseuille-dependent exact
+    /// line-contact flow exists for plain Eyring only.
+    pub fn is_plain_eyring(self) -> bool {
+        matches!(self, ShearLaw::Eyring)
+    }
+
+    /// The bound on the reduced friction of Eq. (8) that the limit sets for any pressure
+    /// field, `mu-bar <= Lambda-bar + (tau_L0 / tau0) A / W` (`tau_m < tau_L0 + Lambda p`
+    /// integrated over the pressurised area `A`, load `W = int P dA`), for the ratio
+    /// `A / W` (dimensionless: 3/2 for the Hertzian ellipse, `4 / pi` for the Hertzian line);
+    /// reached when the whole contact is saturated. `None` without a limit.
+    pub fn friction_bound(self, area_over_load: f64) -> Option<f64> {
         match self {
-            Rheology::Newtonian => x,
-            Rheology::Eyring => {
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => Some(lambda_bar + tau_l0_bar * area_over_load),
+            _ => None,
+        }
+    }
+
+    /// `tau_L / tau0` at pressure `P` (the cavitated and dry zones, `P <= 0`, at `tau_L0`).
+    #[inline]
+    fn limit(tau_l0_bar: f64, lambda_bar: f64, p: f64) -> f64 {
+        tau_l0_bar + lambda_bar * p.max(0.0)
+    }
+
+    /// `1 + r`, `r = (tau_E / tau_L)^2`: the saturation's one ingredient.
+    #[inline]
+    fn one_plus_r(tau_e: f64, tau_l: f64) -> f64 {
+        let q = tau_e / tau_l;
+        1.0 + q * q
+    }
+
+    /// The saturated mean stress `tau_E (1 + r)^(-1/2)` for an Eyring stress `tau_E` at
+    /// pressure `P`; `tau_E` itself for the laws without a limit.
+    #[inline]
+    pub fn saturate(self, tau_e: f64, p: f64) -> f64 {
+        match self {
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => {
+                record(Effect::LimitingShearStress);
+                tau_e / Self::one_plus_r(tau_e, Self::limit(tau_l0_bar, lambda_bar, p)).sqrt()
+            }
+            _ => tau_e,
+        }
+    }
+
+    /// Dimensionless mean shear stress `tau_m / tau0` for the Couette argument `x` at
+    /// pressure `P`: Eq. (4) for Eyring, `x` itself for a Newtonian fluid, the saturated
+    /// Eyring stress for the limiting-stress law.
+    #[inline]
+    pub fn mean_shear_stress(self, x: f64, p: f64) -> f64 {
+        match self {
+            ShearLaw::Newtonian => x,
+            ShearLaw::Eyring => {
                 record(Effect::Eyring);
                 x.asinh()
             }
-        }
-    }
-
-    /// `eta / eta_x`: Eq. (2), `cosh(tau_m) = sqrt(1 + x^2)`.
-    #[inline]
-    pub fn flow_factor_x(self, x: f64) -> f64 {
-        match self {
-            Rheology::Newtonian => 1.0,
-            Rheology::Eyring => {
+            ShearLaw::EyringLss { .. } => {
                 record(Effect::Eyring);
-                x.hypot(1.0)
+                self.saturate(x.asinh(), p)
             }
         }
     }
 
-    /// `eta / eta_y`: Eq. (3) as corrected in SPEC.md, `eta_y = eta tau_m / sinh(tau_m)`,
-    /// so `eta / eta_y = x / asinh(x)`, which tends to 1 as `x -> 0`.
+    /// The factors `(f_x, f_y)` by which the limit multiplies Eyring's `eta / eta_x` and
+    /// `eta / eta_y` at Couette argument `x` and pressure `P`: `((1 + r)^(3/2), (1 + r)^(1/2))`.
     #[inline]
-    pub fn flow_factor_y(self, x: f64) -> f64 {
+    fn saturation_factors(tau_l0_bar: f64, lambda_bar: f64, x: f64, p: f64) -> (f64, f64) {
+        record(Effect::LimitingShearStress);
+        let s = Self::one_plus_r(x.asinh(), Self::limit(tau_l0_bar, lambda_bar, p));
+        let root = s.sqrt();
+        (s * root, root)
+    }
+
+    /// `eta / eta_x`: Eq. (2), `g'(tau_m)`: `cosh(tau_m) = sqrt(1 + x^2)` for Eyring, times
+    /// `(1 + r)^(3/2)` with the limit.
+    #[inline]
+    pub fn flow_factor_x(self, x: f64, p: f64) -> f64 {
         match self {
-            Rheology::Newtonian => 1.0,
-            Rheology::Eyring => {
+            ShearLaw::Newtonian => 1.0,
+            ShearLaw::Eyring => {
+                record(Effect::Eyring);
+                x.hypot(1.0)
+            }
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => {
+                ShearLaw::Eyring.flow_factor_x(x, p)
+                    * Self::saturation_factors(tau_l0_bar, lambda_bar, x, p).0
+            }
+        }
+    }
+
+    /// `eta / eta_y`: Eq. (3) as corrected in SPEC.md, `g(tau_m) / tau_m`: for Eyring
+    /// `eta_y = eta tau_m / sinh(tau_m)`, so `eta / eta_y = x / asinh(x)`, which tends to 1 as
+    /// `x -> 0`; times `(1 + r)^(1/2)` with the limit.
+    #[inline]
+    pub fn flow_factor_y(self, x: f64, p: f64) -> f64 {
+        match self {
+            ShearLaw::Newtonian => 1.0,
+            ShearLaw::Eyring => {
                 record(Effect::Eyring);
                 if x.abs() < 1e-4 {
                     1.0 + x * x / 6.0
@@ -60,27 +231,40 @@ impl Rheology {
                     x / x.asinh()
                 }
             }
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => {
+                ShearLaw::Eyring.flow_factor_y(x, p)
+                    * Self::saturation_factors(tau_l0_bar, lambda_bar, x, p).1
+            }
         }
     }
-}
 
-impl Rheology {
     /// Poiseuille conductance along the sliding direction, `H^3 / eta_x_bar` (Eqs. 1-2), for
-    /// film `h`, viscosity `eta` and `n_s = N S`. For Eyring it is written
+    /// film `h`, viscosity `eta`, `n_s = N S` and pressure `P`. For Eyring it is written
     /// `H^2 hypot(H / eta, N S)`, finite however large `eta` is; zero where `h <= 0`.
     #[inline]
-    pub fn conductance_x(self, h: f64, eta: f64, n_s: f64) -> f64 {
+    pub fn conductance_x(self, h: f64, eta: f64, n_s: f64, p: f64) -> f64 {
         if h <= 0.0 {
             return 0.0;
         }
         match self {
-            Rheology::Newtonian => h * h * h / eta,
+            ShearLaw::Newtonian => h * h * h / eta,
             // sqrt(a^2 + b^2) rather than hypot: a = H/eta <= H and b = N S are far from
             // overflow, and hypot's extra care costs a tenth of a solve.
-            Rheology::Eyring => {
+            ShearLaw::Eyring => {
                 record(Effect::Eyring);
                 let a = h / eta;
                 h * h * (a * a + n_s * n_s).sqrt()
+            }
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => {
+                let x = n_s * eta / h;
+                ShearLaw::Eyring.conductance_x(h, eta, n_s, p)
+                    * Self::saturation_factors(tau_l0_bar, lambda_bar, x, p).0
             }
         }
     }
@@ -88,13 +272,13 @@ impl Rheology {
     /// Poiseuille conductance across the sliding direction, `H^3 / eta_y_bar` (Eqs. 1, 3).
     /// For Eyring, with `x = N S eta / H`: `(H^3 / eta) x / asinh(x) = H^2 N S / asinh(x)`.
     #[inline]
-    pub fn conductance_y(self, h: f64, eta: f64, n_s: f64) -> f64 {
+    pub fn conductance_y(self, h: f64, eta: f64, n_s: f64, p: f64) -> f64 {
         if h <= 0.0 {
             return 0.0;
         }
         match self {
-            Rheology::Newtonian => h * h * h / eta,
-            Rheology::Eyring => {
+            ShearLaw::Newtonian => h * h * h / eta,
+            ShearLaw::Eyring => {
                 record(Effect::Eyring);
                 let x = n_s * eta / h;
                 if x < 1e-4 {
@@ -102,6 +286,14 @@ impl Rheology {
                 } else {
                     h * h * n_s / x.asinh()
                 }
+            }
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => {
+                let x = n_s * eta / h;
+                ShearLaw::Eyring.conductance_y(h, eta, n_s, p)
+                    * Self::saturation_factors(tau_l0_bar, lambda_bar, x, p).1
             }
         }
     }
@@ -111,53 +303,199 @@ impl Rheology {
 mod tests {
     use super::*;
 
+    const EYRING: ShearLaw = ShearLaw::Eyring;
+
     #[test]
     fn eyring_tends_to_newtonian_at_low_stress() {
-        let e = Rheology::Eyring;
+        let e = EYRING;
         for x in [0.0, 1e-8, 1e-5] {
-            assert!((e.mean_shear_stress(x) - x).abs() <= 1e-15);
-            assert!((e.flow_factor_x(x) - 1.0).abs() < 1e-9);
-            assert!((e.flow_factor_y(x) - 1.0).abs() < 1e-9);
+            assert!((e.mean_shear_stress(x, 1.0) - x).abs() <= 1e-15);
+            assert!((e.flow_factor_x(x, 1.0) - 1.0).abs() < 1e-9);
+            assert!((e.flow_factor_y(x, 1.0) - 1.0).abs() < 1e-9);
         }
         // Continuity across the series switch (error of the series ~ x^4/... < 1e-17).
-        let below = e.flow_factor_y(0.99999e-4);
-        let above = e.flow_factor_y(1.00001e-4);
+        let below = e.flow_factor_y(0.99999e-4, 1.0);
+        let above = e.flow_factor_y(1.00001e-4, 1.0);
         assert!((below - above).abs() < 1e-12);
     }
 
     #[test]
     fn eyring_factors_are_cosh_and_sinh_over_tau() {
-        let e = Rheology::Eyring;
+        let e = EYRING;
         for tau in [0.5_f64, 3.0, 40.0] {
             let x = tau.sinh();
-            assert!((e.mean_shear_stress(x) - tau).abs() < 1e-12 * tau.max(1.0));
-            assert!((e.flow_factor_x(x) / tau.cosh() - 1.0).abs() < 1e-12);
-            assert!((e.flow_factor_y(x) / (tau.sinh() / tau) - 1.0).abs() < 1e-12);
+            assert!((e.mean_shear_stress(x, 1.0) - tau).abs() < 1e-12 * tau.max(1.0));
+            assert!((e.flow_factor_x(x, 1.0) / tau.cosh() - 1.0).abs() < 1e-12);
+            assert!((e.flow_factor_y(x, 1.0) / (tau.sinh() / tau) - 1.0).abs() < 1e-12);
         }
         // Huge arguments stay finite.
-        assert!(e.flow_factor_x(1e200).is_finite());
+        assert!(e.flow_factor_x(1e200, 1.0).is_finite());
     }
 
     #[test]
     fn conductances_are_h_cubed_over_the_effective_viscosities() {
-        let e = Rheology::Eyring;
-        for (h, eta, ns) in [(0.02, 1e20, 1e-5), (0.5, 3.0, 0.01), (1.0, 1.0, 0.0)] {
-            let x = ns * eta / h;
-            let cx = h * h * h / eta * e.flow_factor_x(x);
-            let cy = h * h * h / eta * e.flow_factor_y(x);
-            assert!((e.conductance_x(h, eta, ns) / cx - 1.0).abs() < 1e-12);
-            assert!((e.conductance_y(h, eta, ns) / cy - 1.0).abs() < 1e-12);
+        let lss = ShearLaw::EyringLss {
+            tau_l0_bar: 0.7,
+            lambda_bar: 12.0,
+        };
+        for law in [EYRING, lss] {
+            for (h, eta, ns, p) in [
+                (0.02, 1e20, 1e-5, 0.9),
+                (0.5, 3.0, 0.01, 0.2),
+                (1.0, 1.0, 0.0, 0.0),
+            ] {
+                let x = ns * eta / h;
+                let cx = h * h * h / eta * law.flow_factor_x(x, p);
+                let cy = h * h * h / eta * law.flow_factor_y(x, p);
+                // Two roundings of the same product: 1e-12 is a thousand ulps.
+                assert!((law.conductance_x(h, eta, ns, p) / cx - 1.0).abs() < 1e-12);
+                assert!((law.conductance_y(h, eta, ns, p) / cy - 1.0).abs() < 1e-12);
+            }
+            assert_eq!(law.conductance_x(-1e-3, 1.0, 0.1, 0.5), 0.0);
         }
-        assert_eq!(e.conductance_x(-1e-3, 1.0, 0.1), 0.0);
-        // Where eta overflows to infinity the conductance stays finite.
-        assert!(e.conductance_x(0.02, f64::INFINITY, 1e-5).is_finite());
+        // Where eta overflows to infinity the Eyring conductance stays finite.
+        assert!(EYRING
+            .conductance_x(0.02, f64::INFINITY, 1e-5, 1.0)
+            .is_finite());
     }
 
     #[test]
     fn newtonian_is_linear() {
-        let n = Rheology::Newtonian;
-        assert_eq!(n.mean_shear_stress(3.0), 3.0);
-        assert_eq!(n.flow_factor_x(3.0), 1.0);
-        assert_eq!(n.flow_factor_y(3.0), 1.0);
+        let n = ShearLaw::Newtonian;
+        assert_eq!(n.mean_shear_stress(3.0, 1.0), 3.0);
+        assert_eq!(n.flow_factor_x(3.0, 1.0), 1.0);
+        assert_eq!(n.flow_factor_y(3.0, 1.0), 1.0);
+    }
+
+    /// The limiting-stress law's `g(tau) = sinh(tau (1 - (tau/tau_L)^2)^(-1/2))` (module doc),
+    /// written independently of the code under test.
+    fn g(tau: f64, tau_l: f64) -> f64 {
+        (tau / (1.0 - (tau / tau_l).powi(2)).sqrt()).sinh()
+    }
+
+    #[test]
+    fn limiting_stress_law_is_the_perturbation_of_its_flow_law() {
+        // tau_L = 0.5 + 4 P: at P = 0.75 the limit is 3.5.
+        let law = ShearLaw::EyringLss {
+            tau_l0_bar: 0.5,
+            lambda_bar: 4.0,
+        };
+        let (p, tau_l) = (0.75, 3.5);
+        for x in [0.01, 0.5, 3.0, 30.0, 1e4] {
+            let tau = law.mean_shear_stress(x, p);
+            assert!(tau > 0.0 && tau < tau_l, "x = {x}: {tau}");
+            // tau_m = g^-1(x): g(tau_m) returns x up to the conditioning of g near tau_L
+            // (relative 1e-9 is far above round-off, far below any modelling effect).
+            assert!((g(tau, tau_l) / x - 1.0).abs() < 1e-9, "x = {x}");
+            // eta/eta_x = g'(tau_m): central difference of g, step 1e-6 tau (truncation
+            // ~ (1e-6)^2 relative times g'''/g', round-off ~ 1e-16 / 1e-6: both below 1e-6).
+            let d = 1e-6 * tau;
+            let fd = (g(tau + d, tau_l) - g(tau - d, tau_l)) / (2.0 * d);
+            assert!((law.flow_factor_x(x, p) / fd - 1.0).abs() < 1e-6, "x = {x}");
+            // eta/eta_y = g(tau_m)/tau_m = x/tau_m, exactly as defined.
+            assert!(
+                (law.flow_factor_y(x, p) / (x / tau) - 1.0).abs() < 1e-12,
+                "x = {x}"
+            );
+        }
+    }
+
+    #[test]
+    fn an_infinite_limit_is_eyring_to_the_bit() {
+        // (tau_E / tau_L)^2 underflows against 1: every factor is exactly 1.
+        let law = ShearLaw::EyringLss {
+            tau_l0_bar: 1e200,
+            lambda_bar: 0.0,
+        };
+        for (x, p) in [(0.0, 0.0), (1e-5, 0.3), (2.0, 1.0), (1e12, 1.0)] {
+            assert_eq!(
+                law.mean_shear_stress(x, p).to_bits(),
+                EYRING.mean_shear_stress(x, p).to_bits()
+            );
+            assert_eq!(
+                law.flow_factor_x(x, p).to_bits(),
+                EYRING.flow_factor_x(x, p).to_bits()
+            );
+            assert_eq!(
+                law.flow_factor_y(x, p).to_bits(),
+                EYRING.flow_factor_y(x, p).to_bits()
+            );
+            assert_eq!(
+                law.conductance_x(0.1, 1e8, 1e-6, p).to_bits(),
+                EYRING.conductance_x(0.1, 1e8, 1e-6, p).to_bits()
+            );
+            assert_eq!(
+                law.conductance_y(0.1, 1e8, 1e-6, p).to_bits(),
+                EYRING.conductance_y(0.1, 1e8, 1e-6, p).to_bits()
+            );
+        }
+    }
+
+    #[test]
+    fn a_saturated_fluid_carries_the_limiting_stress() {
+        // tau_m = tau_L (1 + (tau_L/tau_E)^2)^(-1/2) -> tau_L: at tau_E = 700 (x = e^700 / 2)
+        // and tau_L = 1.5 the defect is (1.5/700)^2 / 2 = 2.3e-6 relative.
+        let law = ShearLaw::EyringLss {
+            tau_l0_bar: 0.5,
+            lambda_bar: 1.0,
+        };
+        let x = (700.0_f64).exp() / 2.0;
+        let tau = law.mean_shear_stress(x, 1.0);
+        assert!((tau / 1.5 - 1.0).abs() < 2.4e-6 && tau < 1.5, "{tau}");
+        // Negative pressure (cavitated zone) keeps tau_L0.
+        assert!((law.mean_shear_stress(x, -0.2) / 0.5 - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn the_limit_is_read_in_physical_units() {
+        let lss = LimitingShearStress {
+            lambda: 0.08,
+            tau_l0_pa: 5e6,
+        };
+        // Lambda-bar = 0.08 * 2 GPa / 4 MPa = 40, tau_L0 / tau0 = 1.25.
+        match lss.shear_law(4e6, 2e9) {
+            ShearLaw::EyringLss {
+                tau_l0_bar,
+                lambda_bar,
+            } => {
+                assert!((tau_l0_bar - 1.25).abs() < 1e-15);
+                assert!((lambda_bar - 40.0).abs() < 1e-12);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(lss.checked().unwrap(), lss);
+        let bad = LimitingShearStress {
+            tau_l0_pa: 0.0,
+            ..lss
+        };
+        assert_eq!(bad.checked().unwrap_err().0, "tau-l0");
+        let bad = LimitingShearStress {
+            lambda: -0.1,
+            ..lss
+        };
+        assert_eq!(bad.checked().unwrap_err().0, "lambda-lss");
+    }
+
+    #[test]
+    fn plain_rheologies_keep_their_case_file_names() {
+        // The cache keys of every existing case serialise the rheology: these must not move.
+        assert_eq!(
+            serde_json::to_string(&Rheology::Eyring).unwrap(),
+            "\"eyring\""
+        );
+        assert_eq!(
+            serde_json::to_string(&Rheology::Newtonian).unwrap(),
+            "\"newtonian\""
+        );
+        let lss = Rheology::EyringLss(LimitingShearStress {
+            lambda: 0.08,
+            tau_l0_pa: 5e6,
+        });
+        let text = serde_json::to_string(&lss).unwrap();
+        assert_eq!(
+            text,
+            r#"{"eyring-lss":{"lambda":0.08,"tau_l0_pa":5000000.0}}"#
+        );
+        assert_eq!(serde_json::from_str::<Rheology>(&text).unwrap(), lss);
     }
 }

@@ -140,7 +140,7 @@ pub fn fields_thermal(
     let f1 = Flash::of_surface(1, &inputs.solid, contact.u1_m_s, dx, nodes)?;
     let f2 = Flash::of_surface(2, &inputs.solid, contact.u2_m_s, dx, nodes)?;
     let n_s = problem.eyring_n_s();
-    let rheology = problem.rheology;
+    let shear = problem.shear;
     let pass = |closure: Closure| -> Result<Pass, ThermalError> {
         let setting = Setting {
             flash: (&f1, &f2),
@@ -175,7 +175,7 @@ pub fn fields_thermal(
                 x_iso: &x_iso,
                 loaded: &loaded,
             };
-            let s = solve_strip(&strip, &setting, |_, x| rheology.mean_shear_stress(x))?;
+            let s = solve_strip(&strip, &setting, |i, x| shear.mean_shear_stress(x, p[i]))?;
             for i in 1..g.nx {
                 if loaded[i] {
                     load += p[i];

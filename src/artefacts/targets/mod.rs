@@ -4,6 +4,7 @@
 
 pub mod fig8;
 pub mod figure;
+pub mod lss;
 pub mod mastercurve;
 pub mod tables;
 pub mod thermal;
@@ -54,6 +55,7 @@ pub const TARGETS: &[Target] = &[
     Target { name: "fig8", description: "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)", kind: Kind::Table, default_level: None },
     Target { name: "mastercurve", description: "Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on a refined formula fitted to them, cross-validated by figure", kind: Kind::Computed, default_level: None },
     Target { name: "thermal", description: "Beyond the paper: the shear-heating correction of Figs. 4-6 (isothermal vs thermal mu-bar, where the isothermal assumption holds)", kind: Kind::Computed, default_level: None },
+    Target { name: "lss", description: "Beyond the paper: Fig. 4's cases with a limiting shear stress at Lambda-bar 5-40, and the form of their curve", kind: Kind::Computed, default_level: None },
 ];
 
 /// Looks a target up.
@@ -76,6 +78,7 @@ pub fn jobs(name: &str, ctx: &Context) -> Result<Vec<Job>, String> {
     match t.name {
         "table1" | "table2" | "table3" | "fig8" => Ok(Vec::new()),
         "table4" => tables::table4_jobs(),
+        "lss" => lss::jobs(ctx),
         "mastercurve" => {
             // The figures' own cases, each solve once.
             let mut seen = std::collections::HashSet::new();
@@ -106,6 +109,7 @@ pub fn build(name: &str, ctx: &Context) -> Result<Built, String> {
         "fig8" => fig8::build(ctx)?,
         "mastercurve" => mastercurve::build(ctx)?,
         "thermal" => thermal::build(ctx)?,
+        "lss" => lss::build(ctx)?,
         figure_name => figure::build(figure_name, t.default_level, ctx)?,
     };
     if !built.files.iter().any(|f| f.ends_with(SUFFIX)) {

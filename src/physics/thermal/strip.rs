@@ -169,7 +169,7 @@ fn root(g: impl Fn(f64) -> f64, hi: f64) -> Result<f64, String> {
 mod tests {
     use super::super::Solid;
     use super::*;
-    use crate::physics::rheology::Rheology;
+    use crate::physics::rheology::ShearLaw;
 
     /// A Hertzian strip across a 3 GPa-like contact: `n` nodes, film 0.1 um, the isothermal
     /// Couette argument of a heavily loaded mineral oil.
@@ -205,8 +205,8 @@ mod tests {
             viscosity: law,
             heat_per_stress: 4e6 * 0.2,
         };
-        solve_strip(&strip, &setting, |_, x| {
-            Rheology::Eyring.mean_shear_stress(x)
+        solve_strip(&strip, &setting, |i, x| {
+            ShearLaw::Eyring.mean_shear_stress(x, p[i])
         })
         .unwrap()
     }

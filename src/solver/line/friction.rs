@@ -32,9 +32,10 @@ pub(crate) fn friction(level: &Level, model: &Model, rolling: bool) -> Friction 
             0.0
         };
         let x = model.n_s * model.eta(p) / h;
-        sliding += model
-            .flow
-            .mean_shear_stress(model.rheology, x, if gradient { g } else { 0.0 });
+        sliding +=
+            model
+                .flow
+                .mean_shear_stress(model.rheology, x, if gradient { g } else { 0.0 }, p);
         poiseuille += g;
     }
     Friction {

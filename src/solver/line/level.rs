@@ -11,7 +11,7 @@
 use super::kernel::Deformation;
 use crate::physics::density::Density;
 use crate::physics::line_contact::{LineEyringFlow, LineProblem};
-use crate::physics::rheology::Rheology;
+use crate::physics::rheology::ShearLaw;
 use crate::physics::viscosity::Viscosity;
 
 /// `ln(eta/eta0)` is capped here so that `exp` stays finite; no converged EHL solution comes
@@ -23,7 +23,7 @@ const LN_ETA_MAX: f64 = 700.0;
 pub(crate) struct Model {
     pub viscosity: Viscosity,
     pub density: Density,
-    pub rheology: Rheology,
+    pub rheology: ShearLaw,
     pub flow: LineEyringFlow,
     /// `N S`: the Couette argument is `N S eta / H`.
     pub n_s: f64,
@@ -39,7 +39,7 @@ impl Model {
         Model {
             viscosity: problem.viscosity,
             density: problem.density,
-            rheology: problem.rheology,
+            rheology: problem.shear,
             flow: problem.eyring_flow,
             n_s: problem.eyring_n_s(),
             inv_lambda: 1.0 / g.lambda,
@@ -55,7 +55,7 @@ impl Model {
 
     /// Whether the flow depends on the pressure gradient (the exact Eyring flow does).
     pub fn uses_gradient(&self) -> bool {
-        self.rheology == Rheology::Eyring && self.flow == LineEyringFlow::Exact
+        self.rheology.is_plain_eyring() && self.flow == LineEyringFlow::Exact
     }
 }
 
@@ -165,7 +165,7 @@ impl Level {
                 1.0
             };
             let g = if gradient { self.g(m, k) } else { 0.0 };
-            self.eps[k] = rho * m.inv_lambda * m.flow.conductance(m.rheology, h, eta, m.n_s, g);
+            self.eps[k] = rho * m.inv_lambda * m.flow.conductance(m.rheology, h, eta, m.n_s, g, p);
             self.rh[k] = rho * h;
         }
     }

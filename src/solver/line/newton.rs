@@ -31,7 +31,7 @@ fn eps_at(m: &Model, p: f64, h: f64, slope: f64) -> f64 {
     } else {
         0.0
     };
-    rho * m.inv_lambda * m.flow.conductance(m.rheology, h, m.eta(p), m.n_s, g)
+    rho * m.inv_lambda * m.flow.conductance(m.rheology, h, m.eta(p), m.n_s, g, p)
 }
 
 fn central(f: impl Fn(f64) -> f64, x: f64, scale: f64) -> f64 {

@@ -31,7 +31,7 @@ pub(crate) fn friction(level: &Level, model: &Model, rolling_scale: Option<f64>)
             load += p;
             sliding += model
                 .rheology
-                .mean_shear_stress(model.n_s * model.eta(p) / h);
+                .mean_shear_stress(model.n_s * model.eta(p) / h, p);
             if rolling_scale.is_some() {
                 rolling += h * (level.p[k + 1] - level.p[k - 1]) / (2.0 * g.hx);
             }

@@ -3,7 +3,7 @@
 
 use crate::physics::case::Problem;
 use crate::physics::density::Density;
-use crate::physics::rheology::Rheology;
+use crate::physics::rheology::ShearLaw;
 use crate::physics::viscosity::Viscosity;
 use crate::solver::deformation::Deformation;
 use crate::solver::grid::Grid;
@@ -20,7 +20,7 @@ pub(crate) const LOAD: f64 = 2.0 * std::f64::consts::PI / 3.0;
 pub(crate) struct Model {
     pub viscosity: Viscosity,
     pub density: Density,
-    pub rheology: Rheology,
+    pub rheology: ShearLaw,
     /// `N S` of Eq. (4).
     pub n_s: f64,
     /// `1 / lambda`.
@@ -39,7 +39,7 @@ impl Model {
         Model {
             viscosity: problem.viscosity,
             density: problem.density,
-            rheology: problem.rheology,
+            rheology: problem.shear,
             n_s: problem.eyring_n_s(),
             inv_lambda: 1.0 / g.lambda,
             kappa2: g.kappa * g.kappa,
@@ -73,8 +73,8 @@ impl Model {
         let eta = self.eta(p);
         let scale = rho * self.inv_lambda;
         (
-            scale * self.rheology.conductance_x(h, eta, self.n_s),
-            scale * self.kappa2 * self.rheology.conductance_y(h, eta, self.n_s),
+            scale * self.rheology.conductance_x(h, eta, self.n_s, p),
+            scale * self.kappa2 * self.rheology.conductance_y(h, eta, self.n_s, p),
             rho,
         )
     }
