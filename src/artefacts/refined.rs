@@ -90,12 +90,12 @@ pub struct Refined {
 /// The coefficients of the level-7 fit (`repro mastercurve --level 7`, figures/mastercurve-fit.csv),
 /// used by `repro predict`; tests/refined.rs refits them.
 pub const REFINED: Refined = Refined {
-    coefficients: [9.964642e-1, -2.749981e-2, 4.484144e-1, -4.128440e-1],
+    coefficients: [9.964654e-1, -2.750009e-2, 4.484138e-1, -4.128434e-1],
 };
 
 /// Half-width of `repro predict`'s band, relative: the 95th percentile of the cross-validated
 /// relative residuals of the level-7 fit (figures/mastercurve-fit.csv; tests/refined.rs).
-pub const REFINED_BAND: f64 = 4.337120e-2;
+pub const REFINED_BAND: f64 = 4.340948e-2;
 
 impl Refined {
     /// `mu-bar_refined` of a contact.
