@@ -84,7 +84,7 @@ pub struct Params {
     /// Convergence: relative force-balance error. Default 1e-4.
     pub load_tolerance: f64,
     /// Convergence, alternatively: the estimated relative algebraic error of the central
-    /// film, the minimum film and the sliding friction ([`stopping`]). Default 5e-4, a
+    /// film, the minimum film and the sliding and rolling friction ([`stopping`]). Default 5e-4, a
     /// hundredth of level 7's discretisation error in the film; 0 stops on the residual
     /// or the pressure change alone.
     pub output_tolerance: f64,
