@@ -3,7 +3,7 @@
 //! pressure. Computed from the case and its cached record, never by solving again.
 
 use crate::physics::case::Problem;
-use crate::physics::film::hc_eq10;
+use crate::physics::film::{ellipticity_film_ratio, hc_eq10};
 use crate::physics::flat_film::{ln_couette_centre, mu_bar_flat, Geometry};
 use crate::physics::line_contact::{LineFilmFormula, LineProblem};
 
@@ -29,6 +29,14 @@ pub fn line_flat(problem: &LineProblem, h_central: f64) -> f64 {
 pub fn point_nominal_film(problem: &Problem) -> f64 {
     let g = &problem.groups;
     hc_eq10(g.m, g.l) / g.moes_film_scale
+}
+
+/// The nominal film of the refined formula ([`super::refined`]) for an elliptical contact:
+/// Eq. (10), a circular-contact formula, times Nijenbanning's ellipticity ratio, so that a
+/// wide ellipse (Fig. 7's `Rx/Ry = 1/2, 1/5`) is not given the circle's thinner film.
+pub fn point_refined_film(problem: &Problem) -> f64 {
+    let g = &problem.groups;
+    point_nominal_film(problem) * ellipticity_film_ratio(g.m, g.l, g.d)
 }
 
 /// The central film `H` of the line contact's `tau_c` formula (Moes), in the solver's units.
