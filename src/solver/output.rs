@@ -125,7 +125,8 @@ pub struct Info {
     pub level: u32,
     /// What converged the solve.
     pub method: Method,
-    /// Multigrid cycles on the finest level (after the full-multigrid start).
+    /// Multigrid cycles on the finest level (after the full-multigrid start), with those on
+    /// any finer level the film asked for.
     pub cycles: usize,
     /// Newton steps of the point contact's Newton-Krylov finish, over every level of its
     /// grid sequence (0 when the cycles converged, and for the line contact, whose solver
