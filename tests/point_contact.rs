@@ -142,6 +142,19 @@ fn newtonian_film_agrees_with_nijenbanning() {
     }
 }
 
+/// The mean convergence factor per cycle over a solve's residual history (first to last
+/// cycle) and the number of cycles.
+fn convergence_factor(s: &PointSolution) -> (f64, usize) {
+    let h = &s.info.residual_history;
+    let factor = (h[h.len() - 1] / h[0]).powf(1.0 / (h.len() - 1) as f64);
+    (factor, h.len())
+}
+
+/// `|a / b - 1|`.
+fn rel(a: f64, b: f64) -> f64 {
+    (a / b - 1.0).abs()
+}
+
 #[test]
 fn multigrid_converges_at_a_steady_rate() {
     // STYLE.md: test multigrid by its convergence factor per cycle. M = 20, L = 10 converges
@@ -158,12 +171,10 @@ fn multigrid_converges_at_a_steady_rate() {
         None,
     )
     .unwrap();
-    let h = &s.info.residual_history;
-    let factor = (h[h.len() - 1] / h[0]).powf(1.0 / (h.len() - 1) as f64);
+    let (factor, cycles) = convergence_factor(&s);
     assert!(
         factor < 0.65,
-        "convergence factor {factor} over {} cycles",
-        h.len()
+        "convergence factor {factor} over {cycles} cycles"
     );
 }
 
@@ -184,12 +195,10 @@ fn multigrid_converges_at_a_steady_rate_on_the_appendix_case() {
     )
     .unwrap();
     assert_eq!(s.info.method, Method::Cycles);
-    let h = &s.info.residual_history;
-    let factor = (h[h.len() - 1] / h[0]).powf(1.0 / (h.len() - 1) as f64);
+    let (factor, cycles) = convergence_factor(&s);
     assert!(
         factor < 0.70,
-        "convergence factor {factor} over {} cycles",
-        h.len()
+        "convergence factor {factor} over {cycles} cycles"
     );
 }
 
@@ -316,7 +325,6 @@ fn cycles_and_newton_krylov_agree_where_both_converge() {
     )
     .unwrap();
     assert_eq!(newton.info.method, Method::NewtonKrylov);
-    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
     assert!(
         rel(newton.film.h_central, cycles.film.h_central) < 1e-4,
         "Hc {} vs {}",
@@ -347,7 +355,6 @@ fn a_closed_film_is_refined_to_the_next_level() {
     // Hc 2.754665e-3, Hmin 2.377924e-4 (h/c) and mu-bar 30.940073. The cycles stop on the
     // output rule at an estimated 5e-4 (Params::output_tolerance), so 1e-3 bounds them.
     assert_eq!(s.info.newton_steps, 0);
-    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
     for (got, newton, what) in [
         (s.film.h_central, 2.754665e-3, "Hc"),
         (s.film.h_min, 2.377924e-4, "Hmin"),
@@ -478,7 +485,6 @@ fn the_output_rule_stops_within_its_bound_of_the_converged_solution() {
             fast.info.cycles < tight.info.cycles,
             "the rule saves cycles"
         );
-        let rel = |a: f64, b: f64| (a / b - 1.0).abs();
         for (what, a, b) in [
             ("Hc", fast.film.h_central, tight.film.h_central),
             ("Hmin", fast.film.h_min, tight.film.h_min),
