@@ -10,6 +10,8 @@ pub struct BandMatrix {
     width: usize,
     /// Row `i`, column `k` at `i * width + (k + lower - i)`, for `i - lower <= k <= i + upper + lower`.
     a: Vec<f64>,
+    /// Whether an entry off the diagonal has been set since the last reset.
+    coupled: bool,
 }
 
 impl BandMatrix {
@@ -21,6 +23,7 @@ impl BandMatrix {
             lower,
             width,
             a: vec![0.0; n * width],
+            coupled: false,
         }
     }
 
@@ -32,6 +35,7 @@ impl BandMatrix {
     /// Resets to zero for a system of order `n` (reusing the storage).
     pub fn reset(&mut self, n: usize) {
         self.n = n;
+        self.coupled = false;
         self.a.clear();
         self.a.resize(n * self.width, 0.0);
     }
@@ -46,6 +50,7 @@ impl BandMatrix {
     pub fn set(&mut self, i: usize, k: usize, v: f64) {
         let p = self.pos(i, k);
         self.a[p] = v;
+        self.coupled |= i != k;
     }
 
     /// Entry `(i, k)` (zero outside the stored band).
@@ -63,6 +68,9 @@ impl BandMatrix {
     /// Rows are addressed as slices of the band storage: entry `(r, k)` is `row_r[k + lower
     /// - r]`, so row `r = i + s` holds column `k` at `s` places before row `i` does.
     pub fn solve(&mut self, b: &mut [f64]) -> bool {
+        if !self.coupled {
+            return self.solve_diagonal(b);
+        }
         let (n, lower, width) = (self.n, self.lower, self.width);
         // Offset in row `i` of its last stored column.
         let last = |i: usize| (i + width - lower - 1).min(n - 1) + lower - i;
@@ -98,10 +106,12 @@ impl BandMatrix {
             for r in i + 1..=rmax {
                 let s = r - i;
                 let row_r = &mut bottom[(s - 1) * width..s * width];
-                let f = row_r[lower - s] / d;
-                if f == 0.0 {
+                // Zero below the pivot (most rows of a line that is partly outside the
+                // contact): nothing to eliminate, and no division to wait for.
+                if row_r[lower - s] == 0.0 {
                     continue;
                 }
+                let f = row_r[lower - s] / d;
                 row_r[lower - s] = 0.0;
                 for (x, y) in row_r[lower + 1 - s..=end - s]
                     .iter_mut()
@@ -119,6 +129,20 @@ impl BandMatrix {
                 s -= a * x;
             }
             b[i] = s / row[lower];
+        }
+        b.iter().all(|v| v.is_finite())
+    }
+
+    /// [`BandMatrix::solve`] for a matrix with nothing set off its diagonal (the lines of
+    /// the line relaxation outside the contact): the same quotients, without the
+    /// elimination's passes over zeros.
+    fn solve_diagonal(&self, b: &mut [f64]) -> bool {
+        for (i, x) in b[..self.n].iter_mut().enumerate() {
+            let d = self.a[i * self.width + self.lower];
+            if !(d.abs() > 0.0 && d.is_finite()) {
+                return false;
+            }
+            *x /= d;
         }
         b.iter().all(|v| v.is_finite())
     }
@@ -155,6 +179,27 @@ mod tests {
             // Round-off of a well-conditioned 9x9 system.
             assert!((b[i] - x[i]).abs() < 1e-10, "{i}: {} vs {}", b[i], x[i]);
         }
+    }
+
+    #[test]
+    fn a_diagonal_system_is_solved_like_a_banded_one() {
+        let n = 7;
+        let (mut diagonal, mut banded) = (BandMatrix::new(n, 3, 2), BandMatrix::new(n, 3, 2));
+        let b: Vec<f64> = (0..n).map(|i| (i as f64 * 0.9).cos()).collect();
+        let (mut x_diagonal, mut x_banded) = (b.clone(), b.clone());
+        for i in 0..n {
+            let d = 0.3 + 0.7 * i as f64;
+            diagonal.set(i, i, d);
+            banded.set(i, i, d);
+        }
+        // A zero set off the diagonal takes the general elimination.
+        banded.set(3, 1, 0.0);
+        assert!(diagonal.solve(&mut x_diagonal) && banded.solve(&mut x_banded));
+        // The same quotients, bit for bit (the elimination subtracts only zeros).
+        assert_eq!(x_diagonal, x_banded);
+        let mut singular = BandMatrix::new(2, 3, 2);
+        singular.set(0, 0, 1.0);
+        assert!(!singular.solve(&mut [1.0, 1.0]));
     }
 
     #[test]

@@ -101,8 +101,7 @@ impl Hierarchy {
         {
             let (lo, hi) = self.levels.split_at_mut(k);
             let fine = &mut hi[0];
-            fine.update_film(self.h0);
-            fine.update_coefficients(&self.model);
+            fine.refresh(self.h0, &self.model);
             coarsen(fine, &mut lo[k - 1], &self.model, self.h0);
         }
         for _ in 0..self.params.gamma {
@@ -131,14 +130,14 @@ impl Hierarchy {
         level.hrhs = g.sample(|x, y| model.geometry(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
         level.rg = -super::level::LOAD;
+        level.invalidate();
     }
 
     /// Film, coefficients and residual norm of level `k` for its current pressure, and where
     /// the largest residual is.
     pub fn residual_norm(&mut self, k: usize) -> (f64, (f64, f64)) {
         let level = &mut self.levels[k];
-        level.update_film(self.h0);
-        level.update_coefficients(&self.model);
+        level.refresh(self.h0, &self.model);
         level.residual_norm()
     }
 }

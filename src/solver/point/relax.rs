@@ -58,11 +58,10 @@ fn line_kernel(level: &Level) -> ([f64; 6], [f64; 6]) {
     (gs, jd)
 }
 
-/// One relaxation sweep over all lines of `level` (film and coefficients are recomputed
-/// first, from the current pressure and `h0`).
+/// One relaxation sweep over all lines of `level` (film and coefficients are brought up to
+/// date first, from the current pressure and `h0`: [`Level::refresh`]).
 pub(crate) fn relax(level: &mut Level, model: &Model, h0: f64, scratch: &mut LineScratch) {
-    level.update_film(h0);
-    level.update_coefficients(model);
+    level.refresh(h0, model);
     let (dk_gs, dk_jd) = line_kernel(level);
     scratch.pnew.clear();
     scratch.pnew.extend_from_slice(&level.p);
