@@ -53,8 +53,10 @@ pub(crate) fn solve(
             relative_residual: if b_norm == 0.0 { 0.0 } else { f64::NAN },
         };
     }
-    // Krylov basis, Hessenberg matrix (column-major, (m + 1) x m), Givens rotations.
-    let mut basis = vec![vec![0.0; n]; m + 1];
+    // Krylov basis (grown as the iteration needs it: a solve that converges in a few
+    // iterations touches a few vectors, not `m + 1`), Hessenberg matrix (column-major,
+    // (m + 1) x m), Givens rotations.
+    let mut basis = vec![vec![0.0; n]];
     let mut hess = vec![0.0; (m + 1) * m];
     let (mut cs, mut sn) = (vec![0.0; m], vec![0.0; m]);
     let mut g = vec![0.0; m + 1];
@@ -95,6 +97,9 @@ pub(crate) fn solve(
             }
             let h_next = norm(&w);
             hess[k * (m + 1) + k + 1] = h_next;
+            if basis.len() == k + 1 {
+                basis.push(vec![0.0; n]);
+            }
             if h_next > 0.0 {
                 for (v, wj) in basis[k + 1].iter_mut().zip(&w) {
                     *v = wj / h_next;

@@ -18,7 +18,7 @@
 //! differences of those scalar functions; everything else is exact.
 
 use super::level::{Level, Model, LOAD};
-use crate::solver::bordered_lu::{BorderedLu, Entry};
+use crate::solver::bordered_lu::{BorderedLu, Entry, LuStorage};
 use crate::solver::deformation::Kernel;
 
 /// Relative step of the local finite differences.
@@ -291,12 +291,14 @@ impl Jacobian {
     /// iterations per Newton step either way (1-14), but the factor is a quarter the
     /// size and five times faster to compute (0.4 s against 2.0 s) with the box on the
     /// contact alone.
-    /// `local_rows: false` keeps the box on every row.
+    /// `local_rows: false` keeps the box on every row. `storage` is an earlier
+    /// factorisation's, reused.
     pub fn preconditioner(
         &self,
         level: &Level,
         radius: usize,
         local_rows: bool,
+        storage: LuStorage,
     ) -> Option<BorderedLu> {
         let g = level.grid;
         let d0 = level.deformation.kernel().at(0, 0);
@@ -309,7 +311,7 @@ impl Jacobian {
             entries.push(Entry::new(r, c, v));
         });
         let w = vec![Self::load_weight(level); self.active.len()];
-        BorderedLu::factorize(self.active.len(), &entries, &delta, &w, 0.0)
+        BorderedLu::factorize(self.active.len(), &entries, &delta, &w, 0.0, storage)
     }
 
     /// The whole Jacobian, dense row-major `len() x len()`: the oracle of the tests.

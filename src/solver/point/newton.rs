@@ -23,6 +23,7 @@
 
 use super::jacobian::{wedge_weights, Jacobian};
 use super::level::{Level, Model, LOAD};
+use crate::solver::bordered_lu::LuStorage;
 use crate::solver::{gmres, line_search};
 
 /// `|dL/dP|` at every interior node: the Poiseuille stencil and the wedge term's own kernel
@@ -141,6 +142,8 @@ pub(crate) fn iterate(
     let mut ev = evaluate(level, model, *h0, &scale);
     let mut eta = FIRST_FORCING;
     let mut norm_before = f64::NAN;
+    // The factorisation's arrays, kept from one step to the next.
+    let mut storage = LuStorage::default();
     let mut outcome = Outcome {
         converged: false,
         iterations: 0,
@@ -163,7 +166,9 @@ pub(crate) fn iterate(
             .map(|&k| level.p[k] > 0.0 && ev.phi[k] == level.p[k])
             .collect();
         let mut jac = Jacobian::new(level, model, active, cavitating, scale.clone());
-        let Some(preconditioner) = jac.preconditioner(level, limits.box_radius, true) else {
+        let Some(mut preconditioner) =
+            jac.preconditioner(level, limits.box_radius, true, std::mem::take(&mut storage))
+        else {
             return outcome;
         };
         let n = jac.len();
@@ -181,6 +186,7 @@ pub(crate) fn iterate(
             |v, out| jac.apply(level, v, out),
             |v, out| preconditioner.solve(v, out),
         );
+        storage = preconditioner.into_storage();
         outcome.iterations = it;
         outcome.krylov_iterations += krylov.iterations;
         if !step.iter().all(|v| v.is_finite()) {
@@ -381,8 +387,8 @@ mod tests {
         b: &[f64],
         tolerance: f64,
     ) -> (Vec<f64>, gmres::Outcome) {
-        let pc = jac
-            .preconditioner(level, radius, local_rows)
+        let mut pc = jac
+            .preconditioner(level, radius, local_rows, LuStorage::default())
             .expect("regular");
         let mut x = vec![0.0; jac.len()];
         let out = gmres::solve(
