@@ -51,8 +51,7 @@ struct Eval {
 }
 
 fn evaluate(level: &mut Level, model: &Model, h0: f64, scale: &[f64]) -> Eval {
-    level.update_film(h0);
-    level.update_coefficients(model);
+    level.refresh(h0, model);
     let g = level.grid;
     let mut phi = vec![0.0; g.len()];
     let mut sum = 0.0;
@@ -138,6 +137,11 @@ pub(crate) fn iterate(
     report: &mut dyn FnMut(&Level, &Step),
 ) -> Outcome {
     let g = level.grid;
+    // The row scales are those of this state: a level just interpolated (the next level of
+    // a grid sequence, a refined level) holds the coefficients of its last relaxation, or
+    // none at all (before revision point-7 the first step of a refined level was scaled by
+    // its wedge term alone and made little progress: 6 Newton steps at level 8 instead of 5).
+    level.refresh(*h0, model);
     let mut scale = row_scales(level);
     let mut ev = evaluate(level, model, *h0, &scale);
     let mut eta = FIRST_FORCING;
