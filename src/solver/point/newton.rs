@@ -410,6 +410,27 @@ mod tests {
     }
 
     #[test]
+    fn a_step_does_not_depend_on_the_coefficients_left_on_the_level() {
+        // A level fresh from interpolation holds no current coefficients (here: none at
+        // all); one whose coefficients are those of its state must take the same step.
+        let (mut stale, model, h0) = setup();
+        let (mut current, _, _) = setup();
+        current.update_coefficients(&model);
+        let limits = Limits {
+            steps: 1,
+            tolerance: 0.0,
+            load_tolerance: 0.0,
+            box_radius: 2,
+            krylov_restart: 30,
+            krylov_iterations: 60,
+        };
+        let (mut a, mut b) = (h0, h0);
+        iterate(&mut stale, &model, &mut a, &limits, &mut |_, _| {});
+        iterate(&mut current, &model, &mut b, &limits, &mut |_, _| {});
+        assert_eq!((stale.p, a), (current.p, b));
+    }
+
+    #[test]
     fn preconditioned_krylov_solve_matches_the_dense_solve() {
         let (mut level, model, _) = setup();
         let mut jac = linearise(&mut level, &model);
