@@ -44,12 +44,6 @@ impl Default for LuStorage {
     }
 }
 
-impl std::fmt::Debug for LuStorage {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str("LuStorage")
-    }
-}
-
 /// A work buffer of at least `req`, reusing `buffer`'s allocation where it is big enough.
 fn work_space(buffer: &mut Vec<MaybeUninit<u8>>, req: StackReq) -> &mut MemStack {
     // The buffer's start need not be aligned as `req` asks: room for the padding too.
