@@ -13,16 +13,18 @@ pub mod output;
 pub mod point;
 pub mod thermal;
 
-/// Fixes the parallelism of faer's factorisations (the Newton-Krylov preconditioner's sparse
-/// LU, the line contact's dense LU) at a degree of 2, whatever the number of threads. faer
-/// splits its work by the degree it is given; at its default (rayon's current thread count)
-/// the last bits of a factorisation, and so of every Newton iterate after it, depend on the
-/// machine's or the job's thread count: a Slurm task on one CPU and a two-core workstation
-/// gave the same case different last digits. With a fixed degree a case gives the same bits
-/// everywhere; the two halves still run on whatever threads rayon has (in turn, on one).
-/// Degree 2 is what every result computed so far used (this machine's thread count), so
-/// cached results stay valid.
+/// Fixes faer's factorisations (the Newton-Krylov preconditioner's sparse LU, the line
+/// contact's dense LU) to run on one thread, whatever the number of threads. faer splits its
+/// work by the degree of parallelism it is given, so the last bits of a factorisation, and of
+/// every Newton iterate after it, depend on that degree: at faer's default (rayon's thread
+/// count) a Slurm task on one CPU and a two-core workstation gave a case different digits.
+/// One thread gives the same bits everywhere, and it is also the faster choice: until
+/// revision point-8 the degree was 2, and the split's scheduling (threads spinning in
+/// `sched_yield`, freshly mapped buffers) cost more than the second core saved. The M = 19 205
+/// case at level 8 took 48.5 s wall and 57.7 s CPU on two threads, 43.7 s and 43.7 s on one;
+/// three 5P4E and traction-fluid cases 17-30 % less CPU, and less wall time too. A sweep
+/// runs cases side by side on every core anyway.
 pub(crate) fn fix_factorisation_parallelism() {
     static FIXED: std::sync::Once = std::sync::Once::new();
-    FIXED.call_once(|| faer::set_global_parallelism(faer::Par::rayon(2)));
+    FIXED.call_once(|| faer::set_global_parallelism(faer::Par::Seq));
 }

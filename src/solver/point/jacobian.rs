@@ -311,7 +311,7 @@ impl Jacobian {
             entries.push(Entry::new(r, c, v));
         });
         let w = vec![Self::load_weight(level); self.active.len()];
-        BorderedLu::factorize(self.active.len(), &entries, &delta, &w, 0.0, storage)
+        BorderedLu::factorize(&entries, &self.active, &delta, &w, 0.0, storage)
     }
 
     /// The whole Jacobian, dense row-major `len() x len()`: the oracle of the tests.
