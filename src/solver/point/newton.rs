@@ -459,8 +459,12 @@ mod tests {
         let mut jac = linearise(&mut level, &model);
         let radius = level.grid.nx.max(level.grid.ny);
         let b = direction(jac.len());
-        let (_, out) = krylov(&mut level, &mut jac, radius, false, &b, 1e-10);
-        // With no kernel entry dropped the preconditioner is J itself: one iteration.
+        let (_, out) = krylov(&mut level, &mut jac, radius, false, &b, 1e-5);
+        // With no kernel entry dropped the preconditioner is J itself, factorised in single
+        // precision: one iteration leaves only the factor's rounding (unit roundoff 6e-8
+        // times this level-4 system's condition, 1.4e-6 measured), below 1e-5; the 5 x 5
+        // box, which drops the kernel's far field, needs more (the feasibility study: 12
+        // iterations to 1e-6 at level 5).
         assert_eq!(out.iterations, 1, "{out:?}");
     }
 }
