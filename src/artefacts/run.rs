@@ -212,8 +212,8 @@ pub enum Work {
     Point {
         /// The dimensionless problem.
         problem: Problem,
-        /// Solver parameters.
-        params: point::Params,
+        /// Solver parameters (boxed: they are most of the variant's size).
+        params: Box<point::Params>,
         /// The thermal scales, where the case has them: the solution is post-processed with
         /// each of [`TARGET_INPUTS`].
         thermal: Option<Box<ThermalContact>>,
@@ -489,7 +489,7 @@ pub fn point_jobs(cases: &[Case], params: &Params) -> Result<Vec<(Job, Problem)>
                 label: format!("case {} ({})", i + 1, describe(c, params.level)),
                 work: Work::Point {
                     problem: problem.clone(),
-                    params,
+                    params: Box::new(params),
                     thermal: thermal_contact(c, &problem, &lubricants).map(Box::new),
                 },
             };

@@ -120,7 +120,7 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
                 label: format!("Appendix case ({})", describe(&spec.case, level)),
                 work: Work::Point {
                     problem: problem.clone(),
-                    params,
+                    params: Box::new(params),
                     thermal: thermal.clone(),
                 },
             }
