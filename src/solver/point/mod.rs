@@ -33,7 +33,7 @@ use std::time::Instant;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-9";
+pub const SOLVER_REVISION: &str = "point-10";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -337,11 +337,17 @@ fn converge_by_cycles(
         }
         let settled =
             params.output_tolerance > 0.0 && outputs.relative_error() < params.output_tolerance;
-        if (residual < params.tolerance
-            || progress.pressure_change < params.pressure_tolerance
-            || settled)
-            && progress.load_error < params.load_tolerance
+        let still = settled || progress.pressure_change < params.pressure_tolerance;
+        if still
+            && residual >= params.tolerance
+            && params.newton_steps > 0
+            && !stopping::residual_falls(&history)
         {
+            // Settled on a fixed point of the cycle that is not a solution: the Newton-Krylov
+            // finish takes over ([`stopping::residual_falls`]).
+            break;
+        }
+        if (residual < params.tolerance || still) && progress.load_error < params.load_tolerance {
             return Cycles {
                 converged: true,
                 history,
