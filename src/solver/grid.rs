@@ -205,9 +205,59 @@ impl Grid {
         v
     }
 
-    /// Trapezoid-free sum `sum v hx hy` (boundary values are zero for the pressure).
+    /// The domain this grid covers.
+    pub fn domain(&self) -> Domain {
+        Domain {
+            x_start: self.x0,
+            x_end: self.x0 + self.nx as f64 * self.hx,
+            y_half: -self.y0,
+        }
+    }
+
+    /// The indices of the boundary nodes.
+    pub fn boundary(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.py()).flat_map(move |j| {
+            let edge_row = j == 0 || j == self.ny;
+            let step = if edge_row { 1 } else { self.nx };
+            (0..self.px()).step_by(step).map(move |i| self.idx(i, j))
+        })
+    }
+
+    /// `f(X, Y)` at the boundary nodes, zero inside.
+    pub fn sample_boundary(&self, f: impl Fn(f64, f64) -> f64) -> Vec<f64> {
+        let mut v = vec![0.0; self.len()];
+        for j in 0..self.py() {
+            for i in 0..self.px() {
+                if i == 0 || j == 0 || i == self.nx || j == self.ny {
+                    v[self.idx(i, j)] = f(self.x(i), self.y(j));
+                }
+            }
+        }
+        v
+    }
+
+    /// The trapezoidal rule `int v dX dY` over the domain: the interior nodes in storage
+    /// order, then half of each edge node and a quarter of each corner. Where the boundary
+    /// values are zero this is the plain `sum v hx hy`, bit for bit.
     pub fn integrate(&self, v: &[f64]) -> f64 {
-        v.iter().sum::<f64>() * self.hx * self.hy
+        let mut sum = 0.0;
+        for j in 1..self.ny {
+            for i in 1..self.nx {
+                sum += v[self.idx(i, j)];
+            }
+        }
+        let mut edges = 0.0;
+        for i in 1..self.nx {
+            edges += v[self.idx(i, 0)] + v[self.idx(i, self.ny)];
+        }
+        for j in 1..self.ny {
+            edges += v[self.idx(0, j)] + v[self.idx(self.nx, j)];
+        }
+        let corners = v[self.idx(0, 0)]
+            + v[self.idx(self.nx, 0)]
+            + v[self.idx(0, self.ny)]
+            + v[self.idx(self.nx, self.ny)];
+        (sum + 0.5 * edges + 0.25 * corners) * self.hx * self.hy
     }
 }
 

@@ -1,6 +1,7 @@
 //! One grid level of the point-contact problem: its fields, the film thickness equation
 //! (Eq. 6), the coefficients and the discrete Reynolds operator (Eq. 1).
 
+use super::far_field::FarField;
 use crate::physics::case::Problem;
 use crate::physics::density::Density;
 use crate::physics::rheology::ShearLaw;
@@ -104,6 +105,11 @@ pub(crate) struct Level {
     pub pold: Vec<f64>,
     /// Right-hand side of the force balance: `sum P hx hy + rg = 0`.
     pub rg: f64,
+    /// The far-field pressure at the boundary nodes (zero inside): the domain's Dirichlet
+    /// condition ([`super::far_field`]).
+    pub edge: Vec<f64>,
+    /// The load the domain carries: [`LOAD`] less the far field's outside the domain.
+    pub load: f64,
     /// `rho H^3 / (eta_x lambda)` at the nodes.
     pub ex: Vec<f64>,
     /// `kappa^2 rho H^3 / (eta_y lambda)` at the nodes.
@@ -120,17 +126,22 @@ pub(crate) struct Level {
 }
 
 impl Level {
-    pub fn new(grid: Grid, model: &Model) -> Self {
+    /// A level on `grid` whose boundary takes the far-field pressure `far` for the film
+    /// constant `h0` and whose force balance leaves `outside_load` to the far field.
+    pub fn new(grid: Grid, model: &Model, far: &FarField, h0: f64, outside_load: f64) -> Self {
         let n = grid.len();
+        let edge = grid.sample_boundary(|x, y| far.pressure(x, y, h0));
         Level {
             deformation: Deformation::new(&grid, model.kappa, model.ell_k),
-            p: vec![0.0; n],
+            p: edge.clone(),
             f: vec![0.0; n],
             h: vec![0.0; n],
             hrhs: grid.sample(|x, y| model.geometry(x, y)),
             w: vec![0.0; n],
             pold: vec![0.0; n],
-            rg: -LOAD,
+            rg: -(LOAD - outside_load),
+            edge,
+            load: LOAD - outside_load,
             ex: vec![0.0; n],
             ey: vec![0.0; n],
             rho: vec![1.0; n],
@@ -256,6 +267,21 @@ impl Level {
     /// linear in `X` between them (`Y = 0` is a node of every symmetric grid).
     pub fn h_central(&self) -> f64 {
         self.grid.at_centre(&self.h)
+    }
+
+    /// The far field for the film constant `h0` on the boundary ([`Level::edge`]) and its
+    /// outside load in the force balance ([`Level::load`]).
+    pub fn set_far_field(&mut self, far: &FarField, h0: f64, outside_load: f64) {
+        self.edge = self.grid.sample_boundary(|x, y| far.pressure(x, y, h0));
+        self.load = LOAD - outside_load;
+    }
+
+    /// Puts the far-field pressure on the boundary nodes.
+    pub fn set_edge(&mut self) {
+        let g = self.grid;
+        for k in g.boundary() {
+            self.p[k] = self.edge[k];
+        }
     }
 
     /// Force-balance defect `sum P hx hy + rg`.

@@ -1,6 +1,7 @@
 //! The multigrid hierarchy and the FAS cycle with the force balance relaxed on the coarsest
 //! grid (Venner and Lubrecht 2000).
 
+use super::far_field::FarField;
 use super::level::{Level, Model};
 use super::relax::{relax, LineScratch};
 use super::transfer::{coarsen, correct, interpolate_solution};
@@ -13,6 +14,10 @@ use crate::solver::grid::{Domain, Grid};
 pub(crate) struct Hierarchy {
     pub levels: Vec<Level>,
     pub model: Model,
+    /// The flooded inlet beyond the domain.
+    far: FarField,
+    /// Its load outside the domain.
+    outside_load: f64,
     pub h0: f64,
     /// The scale of the rolling friction (`Problem`'s), where it is computed: the cycles'
     /// stopping rule watches it.
@@ -27,13 +32,16 @@ pub(crate) struct Hierarchy {
 
 impl Hierarchy {
     /// Builds every level from `params.coarsest_level` to `params.level` on `domain`.
-    pub fn new(model: Model, domain: &Domain, params: &Params, h0: f64) -> Self {
+    pub fn new(model: Model, far: FarField, domain: &Domain, params: &Params, h0: f64) -> Self {
+        let outside_load = far.outside_load(domain, h0);
         let levels = (params.coarsest_level..=params.level)
-            .map(|l| Level::new(Grid::level(domain, l), &model))
+            .map(|l| Level::new(Grid::level(domain, l), &model, &far, h0, outside_load))
             .collect();
         Hierarchy {
             levels,
             model,
+            far,
+            outside_load,
             h0,
             rolling_scale: None,
             gain: params.force_balance_gain,
@@ -47,7 +55,13 @@ impl Hierarchy {
     pub fn add_finer_level(&mut self, domain: &Domain) -> usize {
         let level = self.finest().grid.nx.trailing_zeros();
         let grid = Grid::level(domain, level);
-        self.levels.push(Level::new(grid, &self.model));
+        self.levels.push(Level::new(
+            grid,
+            &self.model,
+            &self.far,
+            self.h0,
+            self.outside_load,
+        ));
         self.levels.len() - 1
     }
 
@@ -122,14 +136,19 @@ impl Hierarchy {
         interpolate_solution(&lo[k - 1], &mut hi[0]);
     }
 
-    /// Makes level `k` the top of the hierarchy: its own equations, not a coarse-grid problem.
+    /// Makes level `k` the top of the hierarchy: its own equations, not a coarse-grid
+    /// problem, with the far field of the present film constant on its boundary.
     pub fn make_top(&mut self, k: usize) {
         let model = self.model;
+        let domain = self.levels[k].grid.domain();
+        self.outside_load = self.far.outside_load(&domain, self.h0);
         let level = &mut self.levels[k];
+        level.set_far_field(&self.far, self.h0, self.outside_load);
         let g = level.grid;
         level.hrhs = g.sample(|x, y| model.geometry(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
-        level.rg = -super::level::LOAD;
+        level.rg = -level.load;
+        level.set_edge();
         level.invalidate();
     }
 

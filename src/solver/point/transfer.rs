@@ -27,12 +27,13 @@ pub(crate) fn coarsen(fine: &Level, coarse: &mut Level, model: &Model, h0: f64) 
     let at = |i: usize, j: usize, di: isize, dj: isize| {
         gf.idx((i as isize + di) as usize, (j as isize + dj) as usize)
     };
-    // Pressure: full weighting, injection near cavitation; zero on the boundary.
+    // Pressure: full weighting, injection near cavitation and on the boundary (the far
+    // field's values, the same at a coarse node as at the fine node it is).
     for jc in 0..gc.py() {
         for ic in 0..gc.px() {
             let c = gc.idx(ic, jc);
             if ic == 0 || jc == 0 || ic == gc.nx || jc == gc.ny {
-                coarse.p[c] = 0.0;
+                coarse.p[c] = fine.p[gf.idx(2 * ic, 2 * jc)];
                 continue;
             }
             let (i, j) = (2 * ic, 2 * jc);
@@ -122,7 +123,7 @@ fn cubic_line(n: usize, get: impl Fn(usize) -> f64, mut set: impl FnMut(usize, f
 }
 
 /// Full-multigrid start: the converged coarse pressure interpolated (cubic) to the fine grid,
-/// projected on `P >= 0`.
+/// projected on `P >= 0`, the fine level's far field on its boundary.
 pub(crate) fn interpolate_solution(coarse: &Level, fine: &mut Level) {
     let (gf, gc) = (fine.grid, coarse.grid);
     fine.p.iter_mut().for_each(|v| *v = 0.0);
@@ -144,7 +145,11 @@ pub(crate) fn interpolate_solution(coarse: &Level, fine: &mut Level) {
         for i in 0..gf.px() {
             let k = gf.idx(i, j);
             let boundary = i == 0 || j == 0 || i == gf.nx || j == gf.ny;
-            p[k] = if boundary { 0.0 } else { p[k].max(0.0) };
+            p[k] = if boundary {
+                fine.edge[k]
+            } else {
+                p[k].max(0.0)
+            };
         }
     }
 }

@@ -1,0 +1,131 @@
+//! The domain study's probe (docs/DOMAIN_NOTES.md): one point-contact solve on a given
+//! domain, with or without the far-field edge, and its sliding friction integrated over
+//! several regions.
+//!
+//! `cargo run --release --example domain_probe -- d M L SBAR D LEVEL X0 X1 YH FAR` (Moes
+//! groups, Barus, incompressible) or `-- p LUBRICANT T PH UM SLIP TAU0 LEVEL X0 X1 YH FAR`
+//! (physical, the physics of Figs. 4-6); `FAR` is 1 for the far field, 0 for `P = 0`.
+use repro::physics::case::*;
+use repro::physics::lubricant::LubricantTable;
+use repro::solver::grid::Domain;
+use repro::solver::point;
+fn main() {
+    let a: Vec<String> = std::env::args().collect();
+    let f = |i: usize| a[i].parse::<f64>().unwrap();
+    let (case, k) = if a[1] == "d" {
+        (
+            Case {
+                spec: Spec::Dimensionless(DimensionlessCase {
+                    m: f(2),
+                    l: f(3),
+                    s_bar: f(4),
+                    d: f(5),
+                    slip: 0.01,
+                    eta0_pa_s: None,
+                    ph_pa: None,
+                }),
+                physics: Physics::default(),
+            },
+            6,
+        )
+    } else {
+        (
+            Case {
+                spec: Spec::Physical(PhysicalCase {
+                    lubricant: LubricantSpec::Named {
+                        lubricant: a[2].clone(),
+                        temperature_c: f(3),
+                    },
+                    ph_pa: f(4),
+                    um_m_s: f(5),
+                    slip: f(6),
+                    tau0_pa: f(7),
+                    rx_m: 1.03875e-2,
+                    ry_m: 1.03875e-2,
+                    e_prime_pa: 226e9,
+                }),
+                physics: Physics::figs_4_to_7(),
+            },
+            8,
+        )
+    };
+    let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
+    let params = point::Params {
+        domain: Domain {
+            x_start: f(k + 1),
+            x_end: f(k + 2),
+            y_half: f(k + 3),
+        },
+        far_field: a[k + 4] == "1",
+        ..point::Params::at_level(f(k) as u32)
+    };
+    let t = std::time::Instant::now();
+    let r = point::solve(&problem, &params, None);
+    let g = problem.groups;
+    match r {
+        Ok(s) => {
+            let gr = s.grid;
+            let ns = problem.eyring_n_s();
+            let hc = s.film.h_central;
+            let mut out = String::new();
+            for (name, inside) in [
+                (
+                    "r1",
+                    Box::new(|x: f64, y: f64, _h: f64| x * x + y * y <= 1.0)
+                        as Box<dyn Fn(f64, f64, f64) -> bool>,
+                ),
+                (
+                    "r1.5",
+                    Box::new(|x: f64, y: f64, _h: f64| x * x + y * y <= 2.25),
+                ),
+                (
+                    "r2",
+                    Box::new(|x: f64, y: f64, _h: f64| x * x + y * y <= 4.0),
+                ),
+                ("h2", Box::new(move |_x, _y, h: f64| h <= 2.0 * hc)),
+                ("h4", Box::new(move |_x, _y, h: f64| h <= 4.0 * hc)),
+                ("h10", Box::new(move |_x, _y, h: f64| h <= 10.0 * hc)),
+                ("all", Box::new(|_x, _y, _h| true)),
+            ] {
+                let mut sl = 0.0;
+                for j in 1..gr.ny {
+                    for i in 1..gr.nx {
+                        let k = gr.idx(i, j);
+                        let p = s.p[k];
+                        if p <= 0.0 || !inside(gr.x(i), gr.y(j), s.h[k]) {
+                            continue;
+                        }
+                        sl += problem
+                            .shear
+                            .mean_shear_stress(ns * problem.viscosity.eta_bar(p) / s.h[k], p);
+                    }
+                }
+                out += &format!(
+                    " {name} {:.4}",
+                    sl * gr.hx * gr.hy / (2.0 * std::f64::consts::PI / 3.0)
+                );
+            }
+            let pc = gr.at_centre(&s.p);
+            let pmax = s.p.iter().cloned().fold(0.0, f64::max);
+            let mut lin = 0.0;
+            for j in 0..=gr.ny {
+                for i in 0..=gr.nx {
+                    let (x, y) = (gr.x(i), gr.y(j));
+                    if x * x + y * y <= 1.0 {
+                        lin += s.p[gr.idx(i, j)];
+                    }
+                }
+            }
+            println!("   sliding by region:{out} | Pc {pc:.5} Pmax {pmax:.5} load_in_r1 {:.4} method {:?} res {:.2e} newton {} loaderr {:.1e}", lin*gr.hx*gr.hy, s.info.method, s.info.residual(), s.info.newton_steps, s.info.load_error);
+            println!("M {:.3} L {:.2} lam {:.3} dom {:?} far {} Hc {:.5} hcm {:.5} hmin {:.5} mu_s {:.5} mu_r {:?} cyc {} t {:.2}", g.m, g.l, g.lambda, (params.domain.x_start, params.domain.y_half), params.far_field, s.film.h_central, s.film.hc_moes, s.film.hmin_moes, s.friction.sliding, s.friction.rolling, s.info.cycles, t.elapsed().as_secs_f64())
+        }
+        Err(e) => println!(
+            "M {:.3} L {:.2} dom {:?} far {} ERROR {}",
+            g.m,
+            g.l,
+            (params.domain.x_start, params.domain.y_half),
+            params.far_field,
+            e
+        ),
+    }
+}
