@@ -4,7 +4,8 @@
 //!
 //! `cargo run --release --example domain_probe -- d M L SBAR D LEVEL X0 X1 YH FAR` (Moes
 //! groups, Barus, incompressible) or `-- p LUBRICANT T PH UM SLIP TAU0 LEVEL X0 X1 YH FAR`
-//! (physical, the physics of Figs. 4-6); `FAR` is 1 for the far field, 0 for `P = 0`.
+//! (physical, the physics of Figs. 4-6); `FAR` is 1 for the far field, 0 for `P = 0`;
+//! `X0` `auto` (with any `X1 YH`) takes `Domain::for_far_field`.
 use repro::physics::case::*;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::grid::Domain;
@@ -50,12 +51,17 @@ fn main() {
         )
     };
     let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
-    let params = point::Params {
-        domain: Domain {
+    let domain = if a[k + 1] == "auto" {
+        Domain::for_far_field(&problem)
+    } else {
+        Domain {
             x_start: f(k + 1),
             x_end: f(k + 2),
             y_half: f(k + 3),
-        },
+        }
+    };
+    let params = point::Params {
+        domain,
         far_field: a[k + 4] == "1",
         ..point::Params::at_level(f(k) as u32)
     };
@@ -117,13 +123,17 @@ fn main() {
                 }
             }
             println!("   delta {:.4} sliding by region:{out} | Pc {pc:.5} Pmax {pmax:.5} load_in_r1 {:.4} method {:?} res {:.2e} newton {} loaderr {:.1e}", s.delta, lin*gr.hx*gr.hy, s.info.method, s.info.residual(), s.info.newton_steps, s.info.load_error);
-            println!("M {:.3} L {:.2} lam {:.3} dom {:?} far {} Hc {:.5} hcm {:.5} hmin {:.5} mu_s {:.5} mu_r {:?} cyc {} t {:.2}", g.m, g.l, g.lambda, (params.domain.x_start, params.domain.y_half), params.far_field, s.film.h_central, s.film.hc_moes, s.film.hmin_moes, s.friction.sliding, s.friction.rolling, s.info.cycles, t.elapsed().as_secs_f64())
+            println!("M {:.3} L {:.2} lam {:.3} dom {:?} far {} Hc {:.5} hcm {:.5} hmin {:.5} mu_s {:.5} mu_r {:?} cyc {} t {:.2}", g.m, g.l, g.lambda, (params.domain.x_start, params.domain.x_end, params.domain.y_half), params.far_field, s.film.h_central, s.film.hc_moes, s.film.hmin_moes, s.friction.sliding, s.friction.rolling, s.info.cycles, t.elapsed().as_secs_f64())
         }
         Err(e) => println!(
             "M {:.3} L {:.2} dom {:?} far {} ERROR {}",
             g.m,
             g.l,
-            (params.domain.x_start, params.domain.y_half),
+            (
+                params.domain.x_start,
+                params.domain.x_end,
+                params.domain.y_half
+            ),
             params.far_field,
             e
         ),

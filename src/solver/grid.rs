@@ -4,6 +4,9 @@
 //! `0..=nx` by `0..=ny`, stored with `i` (along `X`, the rolling direction) fastest so that a
 //! line of constant `j` is contiguous.
 
+use crate::physics::case::Problem;
+use crate::physics::film::hc_nijenbanning;
+
 /// The rectangular computational domain in `X = x/a`, `Y = y/b`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Domain {
@@ -34,7 +37,40 @@ pub const LIGHT_LOAD_M: f64 = 300.0;
 /// Moes load from which [`Domain::for_load`] takes the heavy-load domain.
 pub const HEAVY_LOAD_M: f64 = 4000.0;
 
+/// The largest `H0 / (m r^2)` the far-field edge may see ([`Domain::for_far_field`]): the
+/// asymptote's second-order error there is about its square. On Fig. 6 case 23
+/// (`docs/DOMAIN_NOTES.md`) edges at 0.13 leave film and friction within 0.02 % and 0.2 %
+/// of a domain twice as large, edges at 0.3 the friction 1 % off.
+pub const FAR_FIELD_GAP_RATIO: f64 = 0.15;
+
 impl Domain {
+    /// The domain a problem needs with the far-field edge (not yet the rule of
+    /// [`Domain::for_problem`], see `docs/DOMAIN_NOTES.md`): the base domain of its load
+    /// ([`Domain::for_load`]), its inlet and sides pushed out where the estimated film constant `H0` would make the
+    /// rigid gap `m r^2` at the edge less than `H0 / FAR_FIELD_GAP_RATIO`, so that the
+    /// far-field asymptote holds there (`point::far_field`), in steps of 0.5.
+    /// `H0` is estimated before the solve as the Nijenbanning-Venner-Moes central film
+    /// (in `h/c`) less the Hertzian approach (1): it is the formula that covers the
+    /// rigid regime, and it overestimates the Roelands films (a larger domain, never a
+    /// smaller one).
+    pub fn for_far_field(problem: &Problem) -> Self {
+        let g = &problem.groups;
+        let base = Domain::for_load(g.m);
+        let h0 = hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0;
+        if h0 <= 0.0 {
+            return base;
+        }
+        let reach = |gap_factor: f64| {
+            let r = (h0 / (FAR_FIELD_GAP_RATIO * gap_factor)).sqrt();
+            (2.0 * r).ceil() / 2.0
+        };
+        Domain {
+            x_start: base.x_start.min(-reach(problem.shape)),
+            x_end: base.x_end,
+            y_half: base.y_half.max(reach(1.0 - problem.shape)),
+        }
+    }
+
     /// The domain for a contact of Moes load `m`: the paper's ([`Domain::default`], which
     /// reproduces Table 4) from [`LIGHT_LOAD_M`] up, the wide one below. Lightly loaded
     /// contacts build up pressure far upstream and spread sideways; on the paper's domain the
