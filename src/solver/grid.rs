@@ -35,6 +35,13 @@ pub const LIGHT_LOAD_M: f64 = 300.0;
 pub const HEAVY_LOAD_M: f64 = 4000.0;
 
 impl Domain {
+    /// The domain a problem is solved on, by every command and pipeline (through
+    /// [`crate::solver::point::Params::for_problem`]): for now the one its Moes load calls
+    /// for ([`Domain::for_load`]).
+    pub fn for_problem(problem: &crate::physics::case::Problem) -> Domain {
+        Domain::for_load(problem.groups.m)
+    }
+
     /// The domain for a contact of Moes load `m`: the paper's ([`Domain::default`], which
     /// reproduces Table 4) from [`LIGHT_LOAD_M`] up, the wide one below. Lightly loaded
     /// contacts build up pressure far upstream and spread sideways; on the paper's domain the
