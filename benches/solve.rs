@@ -18,7 +18,6 @@ use repro::physics::density::DensityLaw;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::physics::viscosity::ViscosityLaw;
-use repro::solver::grid::Domain;
 use repro::solver::point::{solve, Params};
 use std::time::Duration;
 
@@ -110,7 +109,7 @@ fn effects(c: &mut Criterion) {
         let params = Params {
             rolling_friction: *rolling,
             require_positive_film: false,
-            ..Params::at_level(level)
+            ..Params::for_problem(problem, level)
         };
         if solve(problem, &params, None).is_err() {
             eprintln!("effects: {name} does not converge at level {level}; not timed");
@@ -170,10 +169,7 @@ fn hard_case(c: &mut Criterion) {
     };
     let problem = Problem::from_case(&case, &LubricantTable::table1()).expect("valid case");
     let level = if full() { 7 } else { 5 };
-    let params = Params {
-        domain: Domain::for_load(problem.groups.m),
-        ..Params::at_level(level)
-    };
+    let params = Params::for_problem(&problem, level);
     let mut group = c.benchmark_group("hard-case");
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(60));
@@ -226,7 +222,7 @@ fn speed(c: &mut Criterion) {
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(20));
     for (name, problem, level) in runs {
-        let params = Params::at_level(level);
+        let params = Params::for_problem(problem, level);
         group.bench_with_input(BenchmarkId::new(name, level), &level, |b, _| {
             b.iter(|| solve(problem, &params, None).expect("the speed cases converge"))
         });

@@ -6,7 +6,6 @@ use repro::artefacts::run::{run_cases, CaseRun, Store};
 use repro::artefacts::snapshot::compare;
 use repro::artefacts::sweep::Sweep;
 use repro::artefacts::targets::figure::runs_csv;
-use repro::solver::point::Params;
 use std::path::PathBuf;
 
 fn scratch(name: &str) -> PathBuf {
@@ -92,15 +91,7 @@ fn csv_of(sweep: &Sweep, threads: usize) -> String {
         .build()
         .expect("pool");
     let runs: Vec<CaseRun> = pool.install(|| {
-        run_cases(
-            "test",
-            &sweep.cases,
-            &Params::at_level(5),
-            Store::Nothing,
-            &|_| {},
-            &|_| {},
-        )
-        .expect("runs")
+        run_cases("test", &sweep.cases, 5, Store::Nothing, &|_| {}, &|_| {}).expect("runs")
     });
     runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", |r| {
         r.record()

@@ -202,14 +202,11 @@ fn multigrid_converges_at_a_steady_rate_on_the_appendix_case() {
     );
 }
 
-/// A hard case at the paper's working level 7 (on the domain the CLI and the sweeps choose
-/// by load), with the checks of [`assert_sound`]; returns the solution.
+/// A hard case at the paper's working level 7 (with the parameters every command and sweep
+/// takes, [`Params::for_problem`]), with the checks of [`assert_sound`]; returns the solution.
 fn hard_case_at_level_7(case: &Case, what: &str) -> PointSolution {
     let p = problem(case);
-    let params = Params {
-        domain: Domain::for_load(p.groups.m),
-        ..Params::at_level(7)
-    };
+    let params = Params::for_problem(&p, 7);
     let s = solve(&p, &params, None).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert_sound(&s, what);
     assert_eq!(s.info.level, 7, "{what}: the film needed no finer grid");
@@ -388,10 +385,7 @@ fn the_heaviest_table_2_load_is_solved_on_the_heavy_load_domain() {
     let c = physical("mineral-oil-a", 100.0, 3e9, 2.0, 0.005, 6e6, 1.0);
     let p = problem(&c);
     assert!(p.groups.m > 19_000.0, "M = {}", p.groups.m);
-    let params = Params {
-        domain: Domain::for_load(p.groups.m),
-        ..Params::at_level(7)
-    };
+    let params = Params::for_problem(&p, 7);
     assert_eq!(params.domain, Domain::heavy());
     let s = solve(&p, &params, None).unwrap_or_else(|e| panic!("M 19 205: {e}"));
     assert_sound(&s, "M 19 205");

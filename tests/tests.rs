@@ -5,6 +5,7 @@ mod cli;
 mod line_contact;
 mod lss;
 mod mastercurve;
+mod one_rule;
 mod point_contact;
 mod predict;
 mod shards;

@@ -39,19 +39,19 @@ pub const MU_TOLERANCE: f64 = 0.01;
 /// A contact and how the pipeline solves it at a level.
 #[derive(Debug, Clone)]
 pub enum Contact {
-    /// An elliptical contact, solved by [`point::solve`] with `params(level)`.
+    /// An elliptical contact, solved by [`point::solve`] with `params(problem, level)`.
     Point {
         /// The problem.
         problem: Box<Problem>,
-        /// Solver parameters at a level (the ones its targets use).
-        params: fn(u32) -> point::Params,
+        /// Solver parameters of the problem at a level (the ones its targets use).
+        params: fn(&Problem, u32) -> point::Params,
     },
-    /// A line contact, solved by [`line::solve`] with `params(level)`.
+    /// A line contact, solved by [`line::solve`] with `params(problem, level)`.
     Line {
         /// The problem.
         problem: Box<LineProblem>,
-        /// Solver parameters at a level.
-        params: fn(u32) -> line::Params,
+        /// Solver parameters of the problem at a level.
+        params: fn(&LineProblem, u32) -> line::Params,
     },
 }
 
@@ -71,14 +71,14 @@ impl Contact {
     pub fn solve(&self, level: u32) -> Result<Measured, SolveError> {
         match self {
             Contact::Point { problem, params } => {
-                point::solve(problem, &params(level), None).map(|s| Measured {
+                point::solve(problem, &params(problem, level), None).map(|s| Measured {
                     h_central: s.film.h_central,
                     mu_bar: s.friction.sliding,
                     cycles: s.info.cycles,
                 })
             }
             Contact::Line { problem, params } => {
-                line::solve(problem, &params(level), None).map(|s| Measured {
+                line::solve(problem, &params(problem, level), None).map(|s| Measured {
                     h_central: s.film.h_central,
                     mu_bar: s.friction.sliding,
                     cycles: s.info.cycles,
@@ -122,20 +122,15 @@ pub struct StudyCase {
     pub contact: Contact,
 }
 
-/// The parameters the figure targets use (`targets::run_sweep`), without the film's
-/// refinement: a point of the study is a solve on its own level (a figure's closed film is
-/// re-solved one level finer; here the level fails, and its point is left out, rather than
-/// a finer level's time and error being shown under its name).
-fn pipeline_params(level: u32) -> point::Params {
+/// The parameters the figure targets use (the rule, [`point::Params::for_problem`]),
+/// without the film's refinement: a point of the study is a solve on its own level (a
+/// figure's closed film is re-solved one level finer; here the level fails, and its point is
+/// left out, rather than a finer level's time and error being shown under its name).
+pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
     point::Params {
         film_refinement_levels: 0,
-        ..point::Params::at_level(level)
+        ..point::Params::for_problem(problem, level)
     }
-}
-
-/// The line contact's default parameters.
-fn line_params(level: u32) -> line::Params {
-    line::Params::at_level(level)
 }
 
 /// The representative cases, cheapest first:
@@ -195,7 +190,7 @@ pub fn study_cases(with_line: bool) -> Result<Vec<StudyCase>, String> {
         .cloned()
         .ok_or("cases/fig7.toml: no Rx/Ry = 1/5 case at 3 GPa, 60 C")?;
     let point = |case: &crate::physics::case::Case,
-                 params: fn(u32) -> point::Params|
+                 params: fn(&Problem, u32) -> point::Params|
      -> Result<Contact, String> {
         Ok(Contact::Point {
             problem: Box::new(Problem::from_case(case, &lubs).map_err(|e| e.to_string())?),
@@ -248,7 +243,7 @@ pub fn study_cases(with_line: bool) -> Result<Vec<StudyCase>, String> {
             level_offset: 2,
             contact: Contact::Line {
                 problem: Box::new(problem),
-                params: line_params,
+                params: line::Params::for_problem,
             },
         });
     }

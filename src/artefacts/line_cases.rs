@@ -54,17 +54,18 @@ pub struct LineRun {
     pub cached: bool,
 }
 
-/// The five Table 3 line contacts at `level` as jobs (labelled `line contact 1..5`), with
-/// their cases and problems.
+/// The five Table 3 line contacts at `level` as jobs (labelled `line contact 1..5`), each
+/// with the parameters its problem calls for ([`Params::for_problem`]), with their cases and
+/// problems.
 pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem)>, String> {
     let (cases, physics) = table3_line_cases()?;
-    let params = Params::at_level(level);
     cases
         .into_iter()
         .enumerate()
         .map(|(i, case)| {
             let problem = LineProblem::from_physical(&case, physics)
                 .map_err(|e| format!("cases/fig7.toml: line contact: {e}"))?;
+            let params = Params::for_problem(&problem, level);
             let job = Job {
                 key: line_key(&case, &physics, &params),
                 label: format!(
@@ -77,7 +78,7 @@ pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem
                 ),
                 work: Work::Line {
                     problem: problem.clone(),
-                    params: params.clone(),
+                    params,
                 },
             };
             Ok((job, case, problem))

@@ -35,7 +35,8 @@ pub struct Provenance {
     /// Grid level of the point contacts.
     pub level: Option<u32>,
     /// Solver parameters, as the solver's `Params` print (the domain of each point contact
-    /// is chosen from its load, `Domain::for_load`).
+    /// is the one its problem calls for, `Params::for_problem`, whatever the domain printed
+    /// here).
     pub params: Vec<String>,
     /// Who solved the cases: one entry per build and host, with its count of cases.
     pub computed_by: Vec<Computation>,

@@ -8,7 +8,6 @@ use crate::physics::case::{Case, Problem};
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{ThermalContact, TARGET_INPUTS, THERMAL_REVISION};
-use crate::solver::grid::Domain;
 use crate::solver::output::{Film, Friction, Info, SolveError};
 use crate::solver::point::{Params, SOLVER_REVISION};
 use crate::solver::thermal::{point_thermal, Thermal};
@@ -193,15 +192,6 @@ pub fn thermal_contact(
     match &case.spec {
         crate::physics::case::Spec::Physical(p) => ThermalContact::of_point(p, problem, lubricants),
         crate::physics::case::Spec::Dimensionless(_) => None,
-    }
-}
-
-/// The parameters a case of a sweep is solved with: `params` on the domain its load calls
-/// for ([`Domain::for_load`]).
-pub fn case_params(params: &Params, problem: &Problem) -> Params {
-    Params {
-        domain: Domain::for_load(problem.groups.m),
-        ..params.clone()
     }
 }
 
@@ -472,10 +462,10 @@ pub fn describe(case: &Case, level: u32) -> String {
     format!("{body}, level {level}")
 }
 
-/// The jobs of `cases` at `params` (each on the domain its load calls for), labelled
-/// `case 1`, `case 2`, ... in order, with their problems. Cases that do not resolve into a
-/// problem are an error (the sweep file is wrong).
-pub fn point_jobs(cases: &[Case], params: &Params) -> Result<Vec<(Job, Problem)>, String> {
+/// The jobs of `cases` at `level`, each with the parameters its problem calls for
+/// ([`Params::for_problem`]), labelled `case 1`, `case 2`, ... in order, with their problems.
+/// Cases that do not resolve into a problem are an error (the sweep file is wrong).
+pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<(Job, Problem)>, String> {
     let lubricants = LubricantTable::table1();
     cases
         .iter()
@@ -483,7 +473,7 @@ pub fn point_jobs(cases: &[Case], params: &Params) -> Result<Vec<(Job, Problem)>
         .map(|(i, c)| {
             let problem =
                 Problem::from_case(c, &lubricants).map_err(|e| format!("case {}: {e}", i + 1))?;
-            let params = case_params(params, &problem);
+            let params = Params::for_problem(&problem, level);
             let job = Job {
                 key: case_key(c, &params),
                 label: format!("case {} ({})", i + 1, describe(c, params.level)),
@@ -509,17 +499,18 @@ pub struct RunProgress {
     pub cached: usize,
 }
 
-/// Runs `cases` at `params` through `store` (see [`run_jobs`]); `target` names them in
-/// errors. Cases that do not resolve into a problem are an error for the whole run.
+/// Runs `cases` at `level` (see [`point_jobs`]) through `store` (see [`run_jobs`]); `target`
+/// names them in errors. Cases that do not resolve into a problem are an error for the whole
+/// run.
 pub fn run_cases(
     target: &str,
     cases: &[Case],
-    params: &Params,
+    level: u32,
     store: Store,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
 ) -> Result<Vec<CaseRun>, String> {
-    let (jobs, problems): (Vec<Job>, Vec<Problem>) = point_jobs(cases, params)?.into_iter().unzip();
+    let (jobs, problems): (Vec<Job>, Vec<Problem>) = point_jobs(cases, level)?.into_iter().unzip();
     let done = run_jobs(target, &jobs, store, progress, warn)?;
     Ok(cases
         .iter()

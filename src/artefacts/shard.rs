@@ -118,11 +118,10 @@ mod tests {
     use super::*;
     use crate::artefacts::run::point_jobs;
     use crate::artefacts::sweep::shipped_sweep;
-    use crate::solver::point::Params;
 
     fn fig4_jobs() -> Vec<Job> {
         let sweep = shipped_sweep("fig4").unwrap();
-        point_jobs(&sweep.cases, &Params::at_level(5))
+        point_jobs(&sweep.cases, 5)
             .unwrap()
             .into_iter()
             .map(|(j, _)| j)

@@ -69,14 +69,14 @@ impl Row {
     }
 }
 
-/// Solver parameters for a Table 4 level: the defaults, except that at level 5 a
-/// non-positive minimum film is reported rather than refused (the paper's own level-5 film
-/// is six times too thin: 64 x 64 points do not resolve this load).
-pub fn params(level: u32) -> Params {
+/// Solver parameters for a Table 4 level: the rule's ([`Params::for_problem`]; at the
+/// Appendix case's M = 1738 the paper's domain), except that at level 5 a non-positive
+/// minimum film is reported rather than refused (the paper's own level-5 film is six times
+/// too thin: 64 x 64 points do not resolve this load).
+pub fn params(problem: &Problem, level: u32) -> Params {
     Params {
-        level,
         require_positive_film: level > 5,
-        ..Params::default()
+        ..Params::for_problem(problem, level)
     }
 }
 
@@ -91,7 +91,7 @@ pub fn compute(
     let mut rows = Vec::new();
     for &level in levels {
         let t = std::time::Instant::now();
-        let solved = solve(&problem, &params(level), Some(&mut observer));
+        let solved = solve(&problem, &params(&problem, level), Some(&mut observer));
         rows.push(Row {
             level,
             outcome: Outcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
@@ -110,7 +110,7 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
     Ok(levels
         .iter()
         .map(|&level| {
-            let params = params(level);
+            let params = params(&problem, level);
             Job {
                 key: key_of(&(
                     "table4",

@@ -236,8 +236,9 @@ pub enum RheologyArg {
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum DomainArg {
-    /// The wide domain below M = 300, the paper's up to M = 4000, the heavy-load one
-    /// above (as every target does).
+    /// The case's domain by the rule every command and target uses (today the wide domain
+    /// below M = 300, the paper's up to M = 4000, the heavy-load one above). The others are
+    /// expert overrides.
     Auto,
     /// -2.5 <= X <= 1.5, -2 <= Y <= 2: the paper's (reproduces Table 4).
     Paper,

@@ -7,7 +7,7 @@ use repro::artefacts::cache::Cache;
 use repro::artefacts::run::RunProgress;
 use repro::artefacts::target::{check_writable, Context};
 use repro::physics::case::{
-    Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec,
+    Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
 };
 use repro::physics::density::DensityLaw;
 use repro::physics::line_contact::{LineDimensionlessCase, LinePhysicalCase, LineProblem};
@@ -153,12 +153,16 @@ impl SolveArgs {
         Ok(Case { spec, physics })
     }
 
-    /// Point-solver parameters from the numerics flags, for a contact of Moes load `m`.
-    pub fn params(&self, m: f64) -> Result<point::Params> {
+    /// Point-solver parameters for `problem`: the rule every command uses
+    /// ([`point::Params::for_problem`]) at `--level`, with the numerics flags on top
+    /// (`--domain auto` keeps the rule's domain; `paper`, `wide`, `heavy` are expert
+    /// overrides).
+    pub fn params(&self, problem: &Problem) -> Result<point::Params> {
+        let rule =
+            point::Params::for_problem(problem, check_level("--level", self.level.unwrap_or(7))?);
         Ok(point::Params {
-            level: check_level("--level", self.level.unwrap_or(7))?,
             domain: match self.domain {
-                DomainArg::Auto => Domain::for_load(m),
+                DomainArg::Auto => rule.domain,
                 DomainArg::Paper => Domain::default(),
                 DomainArg::Wide => Domain::wide(),
                 DomainArg::Heavy => Domain::heavy(),
@@ -166,7 +170,7 @@ impl SolveArgs {
             max_cycles: self.max_cycles,
             newton_steps: self.newton_steps,
             rolling_friction: !self.no_rolling,
-            ..point::Params::default()
+            ..rule
         })
     }
 
@@ -194,8 +198,10 @@ impl SolveArgs {
         }
     }
 
-    /// Line-solver parameters from the numerics flags (default level 8).
-    pub fn line_params(&self) -> Result<line::Params> {
+    /// Line-solver parameters for `problem`: the rule every command uses
+    /// ([`line::Params::for_problem`]) at `--level` (default 8), with the numerics flags on
+    /// top.
+    pub fn line_params(&self, problem: &LineProblem) -> Result<line::Params> {
         let level = self.level.unwrap_or(line::Params::default().level);
         if !(line::MIN_LEVEL..=line::MAX_LEVEL).contains(&level) {
             bail!(
@@ -205,10 +211,9 @@ impl SolveArgs {
             );
         }
         Ok(line::Params {
-            level,
             max_iterations: self.max_cycles,
             rolling_friction: !self.no_rolling,
-            ..line::Params::default()
+            ..line::Params::for_problem(problem, level)
         })
     }
 

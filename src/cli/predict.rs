@@ -106,7 +106,7 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
 
     let inputs = args.thermal.inputs()?;
     let solved = if args.solve {
-        let params = Params::at_level(level);
+        let params = Params::for_problem(&problem, level);
         let mut printer = solve_progress(args.quiet || args.json);
         match solve_point(&problem, &params, Some(&mut printer)) {
             Ok(s) => Some((problem.clone(), s)),

@@ -23,7 +23,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     }
     let case = args.case()?;
     let problem = Problem::from_case(&case, &LubricantTable::table1()).map_err(flag_error)?;
-    let params = args.params(problem.groups.m)?;
+    let params = args.params(&problem)?;
     let inputs = args.thermal.inputs()?;
     let mut printer = solve_progress(args.quiet);
     let s = match point::solve(&problem, &params, Some(&mut printer)) {
@@ -167,7 +167,7 @@ fn point_text(problem: &Problem, s: &PointSolution) -> String {
 /// `repro solve --line`: the line contact (Fig. 7) from the same flags.
 fn run_line(args: &SolveArgs) -> Result<bool> {
     let problem = args.line_problem()?;
-    let params = args.line_params()?;
+    let params = args.line_params(&problem)?;
     let mut printer = solve_progress(args.quiet);
     let s = match line::solve(&problem, &params, Some(&mut printer)) {
         Ok(s) => s,

@@ -44,6 +44,13 @@ pub const HEAVY_LOAD_M: f64 = 4000.0;
 pub const FAR_FIELD_GAP_RATIO: f64 = 0.15;
 
 impl Domain {
+    /// The domain a problem is solved on, by every command and pipeline (through
+    /// [`crate::solver::point::Params::for_problem`]): for now the one its Moes load calls
+    /// for ([`Domain::for_load`]).
+    pub fn for_problem(problem: &Problem) -> Domain {
+        Domain::for_load(problem.groups.m)
+    }
+
     /// The domain a problem needs with the far-field edge (not yet the rule of
     /// [`Domain::for_problem`], see `docs/DOMAIN_NOTES.md`): the base domain of its load
     /// ([`Domain::for_load`]), its inlet and sides pushed out where the estimated film constant `H0` would make the

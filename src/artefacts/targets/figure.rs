@@ -71,14 +71,7 @@ pub fn run_sweep(
 ) -> Result<(Vec<CaseRun>, u32), String> {
     let (cases, level) = selection(sweep, default_level, ctx);
     let progress = |p: RunProgress| (ctx.progress)(label, p);
-    let runs = run_cases(
-        label,
-        &cases,
-        &Params::at_level(level),
-        ctx.store(),
-        &progress,
-        ctx.warn,
-    )?;
+    let runs = run_cases(label, &cases, level, ctx.store(), &progress, ctx.warn)?;
     Ok((runs, level))
 }
 
@@ -105,7 +98,7 @@ pub fn study_jobs(
     ctx: &Context,
 ) -> Result<Vec<Job>, String> {
     let (cases, level) = selection(sweep, default_level, ctx);
-    Ok(point_jobs(&cases, &Params::at_level(level))?
+    Ok(point_jobs(&cases, level)?
         .into_iter()
         .map(|(j, _)| j)
         .collect())

@@ -225,9 +225,10 @@ pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
     let csv = write(ctx, "table4.csv", &t4::to_csv(rows))?;
     let mut sidecar = Provenance::new("table4", std::slice::from_ref(&csv));
     sidecar.solver_revision = Some(SOLVER_REVISION.to_string());
+    let problem = spec.problem()?;
     sidecar.params = levels
         .iter()
-        .map(|&l| format!("{:?}", t4::params(l)))
+        .map(|&l| format!("{:?}", t4::params(&problem, l)))
         .collect();
     sidecar.add_rows(
         &csv,

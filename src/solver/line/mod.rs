@@ -123,6 +123,15 @@ impl Params {
             ..Params::default()
         }
     }
+
+    /// The rule from a line contact to its solver parameters, which every command and
+    /// pipeline uses (`repro solve --line`, Fig. 7's line contacts, the accuracy study), as
+    /// [`crate::solver::point::Params::for_problem`] is for the elliptical contact. Nothing
+    /// depends on the case yet (the domain is [`LineDomain::default`] for all): the defaults
+    /// at `level`.
+    pub fn for_problem(_problem: &LineProblem, level: u32) -> Self {
+        Params::at_level(level)
+    }
 }
 
 /// A converged line-contact solution.

@@ -173,10 +173,24 @@ impl Default for Params {
 }
 
 impl Params {
-    /// Default parameters at `level`.
+    /// Default parameters at `level`, on the paper's domain whatever the case: for tests and
+    /// studies of the numerics. A case is solved with [`Params::for_problem`].
     pub fn at_level(level: u32) -> Self {
         Params {
             level,
+            ..Params::default()
+        }
+    }
+
+    /// THE rule from a case to its solver parameters, which every command and pipeline uses
+    /// (`repro solve`, `repro predict --solve`, the figure sweeps and studies, Table 4, the
+    /// accuracy study, shards and benchmarks): the defaults at `level` on the domain the
+    /// problem calls for ([`Domain::for_problem`]). A path that needs a different parameter
+    /// (Table 4's film check at level 5, an expert's `--domain`) sets it on top of this.
+    pub fn for_problem(problem: &Problem, level: u32) -> Self {
+        Params {
+            level,
+            domain: Domain::for_problem(problem),
             ..Params::default()
         }
     }

@@ -1,0 +1,267 @@
+//! One rule from a case to its solver parameters (issue 29): a contact solved by `repro
+//! solve`, `repro predict --solve`, a one-point study (`repro run FILE`) and the accuracy
+//! study's pipeline gives the same bits in every one of them.
+//!
+//! Level 5 (64 x 64): every path takes the level it is given, so a path with parameters of its
+//! own shows at any level (before the rule, `repro predict --solve` on the paper's domain did
+//! not even converge on the 5P4E contact at level 5), and at level 5 each solve takes at most
+//! a second or two (the 5P4E contact needs the Newton-Krylov finish), so the seven solves
+//! stay within seconds. Outputs are compared exactly (`f64::to_bits`): the
+//! same parameters on the same problem are the same arithmetic, and the JSON and the cache
+//! print floats in shortest round-trip form, so any difference is a different path.
+
+use crate::support::{repro, repro_in};
+use repro::artefacts::accuracy::{pipeline_params, study_cases, Contact, Measured};
+use repro::artefacts::cache::{Cache, Lookup};
+use repro::artefacts::run::{Outcome, Record};
+use repro::artefacts::sweep::Sweep;
+use repro::physics::case::Problem;
+use repro::physics::lubricant::LubricantTable;
+use std::path::{Path, PathBuf};
+
+const LEVEL: u32 = 5;
+
+/// The 5P4E contact of issue 29 (M about 4.8: a light case, whose domain is not the paper's):
+/// Table 1's 5P4E at 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa, on the default ball (Rx
+/// 1.03875e-2 m, circular, E' 226 GPa), physics of Figs. 4-7.
+const FLAGS_5P4E: [&str; 12] = [
+    "--lubricant",
+    "5p4e",
+    "--temperature",
+    "40",
+    "--ph",
+    "1e9",
+    "--um",
+    "12",
+    "--slip",
+    "0.005",
+    "--tau0",
+    "6e6",
+];
+
+/// The same contact as a study file.
+const STUDY_5P4E: &str = r#"title = "one rule, 5P4E"
+[physics]
+viscosity = "roelands"
+density = "dowson-higginson"
+rheology = "eyring"
+[[point]]
+lubricant = "5p4e"
+temperature_c = 40.0
+ph_gpa = 1.0
+um_m_s = 12.0
+slip = 0.005
+tau0_mpa = 6.0
+rx_m = 1.03875e-2
+d = 1.0
+e_prime_gpa = 226.0
+"#;
+
+/// The accuracy study's `light-barus` case, a Figs. 1-3 style light case (M 50, L 10, S-bar
+/// 0.1, tau0_hat 2 so S = 0.2; Barus, incompressible, Eyring), as flags of `repro solve`.
+const FLAGS_LIGHT: [&str; 14] = [
+    "--m",
+    "50",
+    "--l",
+    "10",
+    "--s-bar",
+    "0.1",
+    "--slip",
+    "0.2",
+    "--viscosity",
+    "barus",
+    "--density",
+    "incompressible",
+    "--rheology",
+    "eyring",
+];
+
+/// The same case as a study file (as `cases/fig1-3.toml` writes it).
+const STUDY_LIGHT: &str = r#"title = "one rule, light Barus"
+[physics]
+viscosity = "barus"
+density = "incompressible"
+rheology = "eyring"
+[[point]]
+m = 50.0
+l = 10.0
+s_bar = 0.1
+tau0_hat = 2.0
+"#;
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("repro-one-rule-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
+
+/// What the paths are compared on: central and minimum film (`H = h/c` and Moes) and sliding
+/// `mu-bar`, equal when their bits are (`f64::to_bits`; printed as numbers when not).
+#[derive(Debug, Clone, Copy)]
+struct Outputs {
+    h_central: f64,
+    hc_moes: Option<f64>,
+    hmin_moes: Option<f64>,
+    mu_bar_sliding: f64,
+}
+
+impl PartialEq for Outputs {
+    fn eq(&self, o: &Self) -> bool {
+        let bits = |v: Option<f64>| v.map(f64::to_bits);
+        self.h_central.to_bits() == o.h_central.to_bits()
+            && bits(self.hc_moes) == bits(o.hc_moes)
+            && bits(self.hmin_moes) == bits(o.hmin_moes)
+            && self.mu_bar_sliding.to_bits() == o.mu_bar_sliding.to_bits()
+    }
+}
+
+impl Outputs {
+    fn of_json(v: &serde_json::Value, what: &str) -> Self {
+        let f = |k: &str| {
+            v[k].as_f64()
+                .unwrap_or_else(|| panic!("{what}: no {k} in {v}"))
+        };
+        Outputs {
+            h_central: f("h_central"),
+            hc_moes: Some(f("hc_moes")),
+            hmin_moes: Some(f("hmin_moes")),
+            mu_bar_sliding: f("mu_bar_sliding"),
+        }
+    }
+
+    fn of_record(r: &Record) -> Self {
+        Outputs {
+            h_central: r.h_central,
+            hc_moes: Some(r.hc_moes),
+            hmin_moes: Some(r.hmin_moes),
+            mu_bar_sliding: r.mu_bar_sliding,
+        }
+    }
+
+    /// The accuracy study measures the central film and sliding `mu-bar` only.
+    fn of_measured(m: &Measured) -> Self {
+        Outputs {
+            h_central: m.h_central,
+            hc_moes: None,
+            hmin_moes: None,
+            mu_bar_sliding: m.mu_bar,
+        }
+    }
+
+    /// The fields the accuracy study has.
+    fn measured_part(&self) -> Self {
+        Outputs {
+            hc_moes: None,
+            hmin_moes: None,
+            ..*self
+        }
+    }
+}
+
+/// `repro solve FLAGS --level 5 --json`.
+fn solve(flags: &[&str]) -> Outputs {
+    let level = LEVEL.to_string();
+    let mut args = vec!["solve"];
+    args.extend(flags);
+    args.extend(["--level", &level, "--json", "-q"]);
+    let (code, out, err) = repro(&args);
+    assert_eq!(code, 0, "repro solve: {err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    Outputs::of_json(&v, "repro solve")
+}
+
+/// `repro predict FLAGS --solve --level 5 --json`: its `solve` object.
+fn predict(flags: &[&str]) -> Outputs {
+    let level = LEVEL.to_string();
+    let mut args = vec!["predict"];
+    args.extend(flags);
+    args.extend(["--solve", "--level", &level, "--json", "-q"]);
+    let (code, out, err) = repro(&args);
+    assert_eq!(code, 0, "repro predict --solve: {out}{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    Outputs::of_json(&v["solve"], "repro predict --solve")
+}
+
+/// `repro run FILE --level 5` of a one-point study, read back from its cache entry (the
+/// CSV rounds to 7 digits; the entry holds the record's full bits).
+fn study(name: &str, text: &str) -> Outputs {
+    let dir = scratch(name);
+    let file = dir.join(format!("{name}.toml"));
+    std::fs::write(&file, text).expect("write the study");
+    let level = LEVEL.to_string();
+    let (code, out, err) = repro_in(
+        Path::new(env!("CARGO_MANIFEST_DIR")),
+        &[
+            "run",
+            file.to_str().expect("utf-8 path"),
+            "--level",
+            &level,
+            "--cache",
+            dir.join("cache").to_str().expect("utf-8 path"),
+            "--out",
+            dir.join("out").to_str().expect("utf-8 path"),
+            "-q",
+        ],
+    );
+    assert_eq!(code, 0, "repro run: {out}{err}");
+    let cache = Cache::new(dir.join("cache"));
+    let keys = cache.keys().expect("the study's cache");
+    assert_eq!(keys.len(), 1, "one point, one entry: {keys:?}");
+    let bits = match cache.get::<Outcome>(&keys[0]) {
+        Lookup::Hit(Outcome::Solved(r), _) => Outputs::of_record(&r),
+        other => panic!("repro run: {other:?}"),
+    };
+    let _ = std::fs::remove_dir_all(&dir);
+    bits
+}
+
+/// The accuracy study's pipeline ([`pipeline_params`]) on `contact` at level 5.
+fn accuracy(contact: &Contact) -> Outputs {
+    Outputs::of_measured(
+        &contact
+            .solve(LEVEL)
+            .expect("the accuracy pipeline converges"),
+    )
+}
+
+#[test]
+fn every_path_solves_the_5p4e_contact_alike() {
+    let by_solve = solve(&FLAGS_5P4E);
+    let by_predict = predict(&FLAGS_5P4E);
+    let by_study = study("5p4e", STUDY_5P4E);
+    let sweep = Sweep::parse("one-rule.toml", STUDY_5P4E).expect("a valid study");
+    let problem =
+        Problem::from_case(&sweep.cases[0], &LubricantTable::table1()).expect("a valid case");
+    assert!(problem.groups.m < 10.0, "M = {}", problem.groups.m);
+    let by_accuracy = accuracy(&Contact::Point {
+        problem: Box::new(problem),
+        params: pipeline_params,
+    });
+    assert_eq!(by_predict, by_solve, "repro predict --solve vs repro solve");
+    assert_eq!(by_study, by_solve, "repro run vs repro solve");
+    assert_eq!(
+        by_accuracy,
+        by_solve.measured_part(),
+        "accuracy pipeline vs repro solve"
+    );
+}
+
+#[test]
+fn every_path_solves_the_light_barus_case_alike() {
+    // `repro predict` takes the physical form only: this case goes through the other paths.
+    let by_solve = solve(&FLAGS_LIGHT);
+    let by_study = study("light", STUDY_LIGHT);
+    let cases = study_cases(false).expect("the accuracy study's cases");
+    let light = cases
+        .iter()
+        .find(|c| c.name == "light-barus")
+        .expect("the accuracy study has light-barus");
+    let by_accuracy = accuracy(&light.contact);
+    assert_eq!(by_study, by_solve, "repro run vs repro solve");
+    assert_eq!(
+        by_accuracy,
+        by_solve.measured_part(),
+        "accuracy study (light-barus) vs repro solve"
+    );
+}
