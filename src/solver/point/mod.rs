@@ -453,8 +453,10 @@ fn grid_sequence(
         .newton_start_level
         .clamp(params.coarsest_level, params.level)
         - params.coarsest_level) as usize;
-    mg.make_top(first);
+    // The saved state first, then its level made the top: the far-field edge follows the
+    // restored film constant.
     starts[first].restore(mg, first);
+    mg.make_top(first);
     let mut converged = false;
     if first < top {
         let windows = StallWindows {
