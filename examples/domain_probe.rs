@@ -33,9 +33,18 @@ fn main() {
         (
             Case {
                 spec: Spec::Physical(PhysicalCase {
-                    lubricant: LubricantSpec::Named {
-                        lubricant: a[2].clone(),
-                        temperature_c: f(3),
+                    lubricant: if a[2] == "given" {
+                        // `given T` takes alpha (1/Pa) and eta0 (Pa s) from PROBE_ALPHA, PROBE_ETA0.
+                        let env = |k: &str| std::env::var(k).unwrap().parse::<f64>().unwrap();
+                        LubricantSpec::Given {
+                            alpha_per_pa: env("PROBE_ALPHA"),
+                            eta0_pa_s: env("PROBE_ETA0"),
+                        }
+                    } else {
+                        LubricantSpec::Named {
+                            lubricant: a[2].clone(),
+                            temperature_c: f(3),
+                        }
                     },
                     ph_pa: f(4),
                     um_m_s: f(5),
@@ -66,7 +75,16 @@ fn main() {
         ..point::Params::at_level(f(k) as u32)
     };
     let t = std::time::Instant::now();
-    let r = point::solve(&problem, &params, None);
+    let verbose = std::env::var_os("PROBE_VERBOSE").is_some();
+    let mut show = |p: &repro::solver::output::Progress| {
+        if verbose {
+            eprintln!(
+                "  level {} {:?} {} res {:.2e} load {:.1e} dP {:.1e} Hc {:.5} worst at ({:.3}, {:.3})",
+                p.level, p.step, p.count, p.residual, p.load_error, p.pressure_change, p.h_central, p.worst_at.0, p.worst_at.1
+            )
+        }
+    };
+    let r = point::solve(&problem, &params, Some(&mut show));
     let g = problem.groups;
     match r {
         Ok(s) => {
