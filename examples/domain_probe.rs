@@ -5,7 +5,8 @@
 //! `cargo run --release --example domain_probe -- d M L SBAR D LEVEL X0 X1 YH FAR` (Moes
 //! groups, Barus, incompressible) or `-- p LUBRICANT T PH UM SLIP TAU0 LEVEL X0 X1 YH FAR`
 //! (physical, the physics of Figs. 4-6); `FAR` is 1 for the far field, 0 for `P = 0`;
-//! `X0` `auto` (with any `X1 YH`) takes `Domain::for_far_field`.
+//! `X0` `auto` (with any `X1 YH`) takes `Domain::for_far_field`, `auto2` that domain with
+//! its inlet and sides doubled at the same mesh size (run it one level finer).
 use repro::physics::case::*;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::grid::Domain;
@@ -62,6 +63,15 @@ fn main() {
     let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
     let domain = if a[k + 1] == "auto" {
         Domain::for_far_field(&problem)
+    } else if a[k + 1] == "auto2" {
+        // The rule's domain with its inlet and side extents doubled at the same mesh size
+        // (run it one level finer): the inlet grows by the domain's width.
+        let d = Domain::for_far_field(&problem);
+        Domain {
+            x_start: 2.0 * d.x_start - d.x_end,
+            x_end: d.x_end,
+            y_half: 2.0 * d.y_half,
+        }
     } else {
         Domain {
             x_start: f(k + 1),

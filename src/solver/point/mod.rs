@@ -29,6 +29,7 @@ use crate::solver::output::{
     mean_change, Film, Friction, Info, Method, Progress, SolveError, Step,
 };
 use far_field::FarField;
+pub use friction::{FrictionRegion, LOADED_FILM_FACTOR};
 use level::{Model, LOAD};
 use multigrid::Hierarchy;
 use std::time::Instant;
@@ -126,6 +127,9 @@ pub struct Params {
     /// give Newton-Krylov a start and a Newton step costs about what a cycle does. Default 5:
     /// on the 5P4E cases they stall after about 8 cycles and ran 30 more at 15 ms with 15.
     pub sequence_stall_cycles: usize,
+    /// Where the friction is integrated ([`FrictionRegion`]). Default the whole domain (the
+    /// paper's Eq. 8); the loaded film goes with the far field.
+    pub friction_region: FrictionRegion,
     /// Compute the rolling (Poiseuille) part of the friction. Default true.
     pub rolling_friction: bool,
     /// Fail with [`SolveError::FilmCollapse`] when the minimum film is not positive (after
@@ -165,6 +169,7 @@ impl Default for Params {
             stall_cycles: 15,
             early_stall_cycles: 6,
             sequence_stall_cycles: 5,
+            friction_region: FrictionRegion::Domain,
             rolling_friction: true,
             require_positive_film: true,
             film_refinement_levels: 1,
@@ -349,7 +354,8 @@ fn converge_by_cycles(
         }
         if params.output_tolerance > 0.0 {
             let film = friction::film(level, 1.0);
-            let mu_bar = friction::friction(level, &mg.model, mg.rolling_scale);
+            let mu_bar =
+                friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
             outputs.push(
                 film.h_central,
                 film.h_min,
@@ -684,7 +690,7 @@ pub fn solve(
             residual_history: history,
         });
     }
-    let friction = friction::friction(fine, &mg.model, mg.rolling_scale);
+    let friction = friction::friction(fine, &mg.model, mg.rolling_scale, params.friction_region);
     if !friction.sliding.is_finite() || !friction.total().is_finite() {
         return Err(SolveError::NonFinite {
             what: "friction",
