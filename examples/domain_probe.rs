@@ -4,7 +4,7 @@
 //!
 //! `cargo run --release --example domain_probe -- d M L SBAR D LEVEL X0 X1 YH FAR` (Moes
 //! groups, Barus, incompressible) or `-- p LUBRICANT T PH UM SLIP TAU0 LEVEL X0 X1 YH FAR`
-//! (physical, the physics of Figs. 4-6); `FAR` is 1 for the far field, 0 for `P = 0`;
+//! (physical, the physics of Figs. 4-6); `FAR` is 1 for the far field, 2 for it with a fitted amplitude, 0 for `P = 0`;
 //! `X0` `auto` (with any `X1 YH`) takes `Domain::for_far_field`, `auto2` that domain with
 //! its inlet and sides doubled at the same mesh size (run it one level finer).
 use repro::physics::case::*;
@@ -81,7 +81,8 @@ fn main() {
     };
     let params = point::Params {
         domain,
-        far_field: a[k + 4] == "1",
+        far_field: a[k + 4] != "0",
+        far_field_fitted: a[k + 4] == "2",
         ..point::Params::at_level(f(k) as u32)
     };
     let t = std::time::Instant::now();

@@ -42,6 +42,10 @@ pub const SOLVER_REVISION: &str = "point-10";
 pub const MAX_LEVEL: u32 = 9;
 /// Lowest level the solver accepts as the finest.
 pub const MIN_LEVEL: u32 = 3;
+/// Rounds of Newton-Krylov and refitting of a fitted far field ([`Params::far_field_fitted`]).
+const FAR_FIELD_ROUNDS: usize = 8;
+/// Relative change of the far field's amplitude below which it counts as settled.
+const FAR_FIELD_SETTLED: f64 = 1e-4;
 /// Residual growth over the best cycle that stops the solve as diverged.
 const DIVERGENCE_FACTOR: f64 = 1e3;
 
@@ -62,6 +66,10 @@ pub struct Params {
     /// paper's `P = 0` at the edge: the far field is under study (`docs/DOMAIN_NOTES.md`)
     /// and not yet part of the case -> parameters rule.
     pub far_field: bool,
+    /// With [`Params::far_field`]: the asymptote's amplitude fitted to the solution a few
+    /// cells inside the edge before each finest cycle and between Newton-Krylov solves,
+    /// instead of fixed from `lambda`. Default false (under study).
+    pub far_field_fitted: bool,
     /// Relaxations before coarsening. Default 2.
     pub pre_sweeps: usize,
     /// Relaxations after the correction. Default 1.
@@ -150,6 +158,7 @@ impl Default for Params {
             coarsest_level: 4,
             domain: Domain::default(),
             far_field: false,
+            far_field_fitted: false,
             pre_sweeps: 2,
             post_sweeps: 1,
             coarsest_sweeps: 100,
@@ -324,6 +333,9 @@ fn converge_by_cycles(
     let mut best_residual = f64::INFINITY;
     let mut outputs = stopping::OutputHistory::default();
     for cycle in 1..=params.max_cycles {
+        if params.far_field && params.far_field_fitted {
+            mg.fit_far_field(k);
+        }
         let before = mg.levels[k].p.clone();
         mg.cycle(k);
         let progress = cycle_progress(mg, k, cycle, &before);
@@ -397,6 +409,34 @@ fn converge_by_cycles(
 /// The Newton-Krylov finish on level `k` (the top of the hierarchy) from its current
 /// state; each step is reported and its residual appended to `history`.
 fn finish(
+    mg: &mut Hierarchy,
+    k: usize,
+    params: &Params,
+    observe: &mut dyn FnMut(&Progress),
+    history: &mut Vec<f64>,
+) -> newton::Outcome {
+    let mut outcome = newton_solve(mg, k, params, observe, history);
+    if !(params.far_field && params.far_field_fitted) {
+        return outcome;
+    }
+    // A fitted far field: Newton with the edge frozen, the amplitude refitted to its
+    // solution, until the amplitude settles (a few rounds; each a warm Newton solve).
+    for _ in 0..FAR_FIELD_ROUNDS {
+        if !outcome.converged || mg.fit_far_field(k) < FAR_FIELD_SETTLED {
+            break;
+        }
+        let next = newton_solve(mg, k, params, observe, history);
+        outcome = newton::Outcome {
+            converged: next.converged,
+            iterations: outcome.iterations + next.iterations,
+            krylov_iterations: outcome.krylov_iterations + next.krylov_iterations,
+        };
+    }
+    outcome
+}
+
+/// One Newton-Krylov solve on level `k` with its edge as it stands.
+fn newton_solve(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,

@@ -152,6 +152,19 @@ impl Hierarchy {
         level.invalidate();
     }
 
+    /// Refits the far field's amplitude to level `k`'s pressure and puts the result on its
+    /// edge and in its force balance; returns the amplitude's relative change.
+    pub fn fit_far_field(&mut self, k: usize) -> f64 {
+        let level = &mut self.levels[k];
+        let change = self.far.fit(&level.grid, &level.p, self.h0);
+        self.outside_load = self.far.outside_load(&level.grid.domain(), self.h0);
+        level.set_far_field(&self.far, self.h0, self.outside_load);
+        level.rg = -level.load;
+        level.set_edge();
+        level.invalidate();
+        change
+    }
+
     /// Film, coefficients and residual norm of level `k` for its current pressure, and where
     /// the largest residual is.
     pub fn residual_norm(&mut self, k: usize) -> (f64, (f64, f64)) {
