@@ -61,12 +61,18 @@ fn main() {
         )
     };
     let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
+    // PROBE_RATIO overrides the rule's largest H0 / (m r^2) at the edge.
+    let ratio = std::env::var("PROBE_RATIO")
+        .ok()
+        .map_or(repro::solver::grid::FAR_FIELD_GAP_RATIO, |v| {
+            v.parse().unwrap()
+        });
     let domain = if a[k + 1] == "auto" {
-        Domain::for_far_field(&problem)
+        Domain::for_far_field_at(&problem, ratio)
     } else if a[k + 1] == "auto2" {
         // The rule's domain with its inlet and side extents doubled at the same mesh size
         // (run it one level finer): the inlet grows by the domain's width.
-        let d = Domain::for_far_field(&problem);
+        let d = Domain::for_far_field_at(&problem, ratio);
         Domain {
             x_start: 2.0 * d.x_start - d.x_end,
             x_end: d.x_end,

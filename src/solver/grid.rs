@@ -61,6 +61,12 @@ impl Domain {
     /// rigid regime, and it overestimates the Roelands films (a larger domain, never a
     /// smaller one).
     pub fn for_far_field(problem: &Problem) -> Self {
+        Domain::for_far_field_at(problem, FAR_FIELD_GAP_RATIO)
+    }
+
+    /// [`Domain::for_far_field`] with the edge's largest `H0 / (m r^2)` given (the domain
+    /// study's knob).
+    pub fn for_far_field_at(problem: &Problem, gap_ratio: f64) -> Self {
         let g = &problem.groups;
         let base = Domain::for_load(g.m);
         let h0 = hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0;
@@ -68,7 +74,7 @@ impl Domain {
             return base;
         }
         let reach = |gap_factor: f64| {
-            let r = (h0 / (FAR_FIELD_GAP_RATIO * gap_factor)).sqrt();
+            let r = (h0 / (gap_ratio * gap_factor)).sqrt();
             (2.0 * r).ceil() / 2.0
         };
         // The outlet: the rigid regime's pressure reaches downstream of the centre too (at
