@@ -157,7 +157,7 @@ fn main() {
                     }
                 }
             }
-            println!("   delta {:.4} sliding by region:{out} | Pc {pc:.5} Pmax {pmax:.5} load_in_r1 {:.4} method {:?} res {:.2e} newton {} loaderr {:.1e}", s.delta, lin*gr.hx*gr.hy, s.info.method, s.info.residual(), s.info.newton_steps, s.info.load_error);
+            println!("   delta {:.4} (estimate {:.4}) sliding by region:{out} | Pc {pc:.5} Pmax {pmax:.5} load_in_r1 {:.4} method {:?} res {:.2e} newton {} loaderr {:.1e}", s.delta, repro::physics::film::hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0, lin*gr.hx*gr.hy, s.info.method, s.info.residual(), s.info.newton_steps, s.info.load_error);
             println!("M {:.3} L {:.2} lam {:.3} dom {:?} far {} Hc {:.5} hcm {:.5} hmin {:.5} mu_s {:.5} mu_r {:?} cyc {} t {:.2}", g.m, g.l, g.lambda, (params.domain.x_start, params.domain.x_end, params.domain.y_half), params.far_field, s.film.h_central, s.film.hc_moes, s.film.hmin_moes, s.friction.sliding, s.friction.rolling, s.info.cycles, t.elapsed().as_secs_f64())
         }
         Err(e) => println!(
