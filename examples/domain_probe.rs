@@ -67,12 +67,16 @@ fn main() {
         .map_or(repro::solver::grid::FAR_FIELD_GAP_RATIO, |v| {
             v.parse().unwrap()
         });
+    // PROBE_SHARE bounds the far field's estimated share of the load outside.
+    let share = std::env::var("PROBE_SHARE")
+        .ok()
+        .map_or(f64::INFINITY, |v| v.parse().unwrap());
     let domain = if a[k + 1] == "auto" {
-        Domain::for_far_field_at(&problem, ratio)
+        Domain::for_far_field_with(&problem, ratio, share)
     } else if a[k + 1] == "auto2" {
         // The rule's domain with its inlet and side extents doubled at the same mesh size
         // (run it one level finer): the inlet grows by the domain's width.
-        let d = Domain::for_far_field_at(&problem, ratio);
+        let d = Domain::for_far_field_with(&problem, ratio, share);
         Domain {
             x_start: 2.0 * d.x_start - d.x_end,
             x_end: d.x_end,

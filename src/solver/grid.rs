@@ -67,15 +67,24 @@ impl Domain {
     /// [`Domain::for_far_field`] with the edge's largest `H0 / (m r^2)` given (the domain
     /// study's knob).
     pub fn for_far_field_at(problem: &Problem, gap_ratio: f64) -> Self {
+        Domain::for_far_field_with(problem, gap_ratio, f64::INFINITY)
+    }
+
+    /// [`Domain::for_far_field_at`] whose edges also keep the far field's estimated share of
+    /// the load outside below `load_share`: about `2 g(0) / R` with `g(0) = 0.8 lambda` (the
+    /// circle's), against `2 pi / 3` (the domain study's second knob; infinite turns it off).
+    pub fn for_far_field_with(problem: &Problem, gap_ratio: f64, load_share: f64) -> Self {
         let g = &problem.groups;
         let base = Domain::for_load(g.m);
         let h0 = hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0;
-        if h0 <= 0.0 {
-            return base;
-        }
+        let by_share = 1.6 * g.lambda / (load_share * 2.0 * std::f64::consts::PI / 3.0);
         let reach = |gap_factor: f64| {
-            let r = (h0 / (gap_ratio * gap_factor)).sqrt();
-            (2.0 * r).ceil() / 2.0
+            let by_gap = if h0 > 0.0 {
+                (h0 / (gap_ratio * gap_factor)).sqrt()
+            } else {
+                0.0
+            };
+            (2.0 * by_gap.max(by_share)).ceil() / 2.0
         };
         // The outlet: the rigid regime's pressure reaches downstream of the centre too (at
         // M 0.83 an outlet at X = 1.5 instead of 13.5 moves the film 3 % and the friction
