@@ -70,7 +70,9 @@ fn main() {
     // PROBE_SHARE bounds the far field's estimated share of the load outside.
     let share = std::env::var("PROBE_SHARE")
         .ok()
-        .map_or(f64::INFINITY, |v| v.parse().unwrap());
+        .map_or(repro::solver::grid::FAR_FIELD_LOAD_SHARE, |v| {
+            v.parse().unwrap()
+        });
     let domain = if a[k + 1] == "auto" {
         Domain::for_far_field_with(&problem, ratio, share)
     } else if a[k + 1] == "auto2" {
