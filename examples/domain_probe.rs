@@ -93,8 +93,11 @@ fn main() {
     };
     let params = point::Params {
         domain,
-        far_field: a[k + 4] != "0",
-        far_field_fitted: a[k + 4] == "2",
+        edge: match a[k + 4].as_str() {
+            "0" => point::Edge::Zero,
+            "1" => point::Edge::FarField,
+            _ => point::Edge::FittedFarField,
+        },
         ..point::Params::at_level(f(k) as u32)
     };
     let t = std::time::Instant::now();
@@ -164,10 +167,10 @@ fn main() {
                 }
             }
             println!("   delta {:.4} (estimate {:.4}) sliding by region:{out} | Pc {pc:.5} Pmax {pmax:.5} load_in_r1 {:.4} method {:?} res {:.2e} newton {} loaderr {:.1e}", s.delta, repro::physics::film::hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0, lin*gr.hx*gr.hy, s.info.method, s.info.residual(), s.info.newton_steps, s.info.load_error);
-            println!("M {:.3} L {:.2} lam {:.3} dom {:?} far {} Hc {:.5} hcm {:.5} hmin {:.5} mu_s {:.5} mu_r {:?} cyc {} t {:.2}", g.m, g.l, g.lambda, (params.domain.x_start, params.domain.x_end, params.domain.y_half), params.far_field, s.film.h_central, s.film.hc_moes, s.film.hmin_moes, s.friction.sliding, s.friction.rolling, s.info.cycles, t.elapsed().as_secs_f64())
+            println!("M {:.3} L {:.2} lam {:.3} dom {:?} far {:?} Hc {:.5} hcm {:.5} hmin {:.5} mu_s {:.5} mu_r {:?} cyc {} t {:.2}", g.m, g.l, g.lambda, (params.domain.x_start, params.domain.x_end, params.domain.y_half), params.edge, s.film.h_central, s.film.hc_moes, s.film.hmin_moes, s.friction.sliding, s.friction.rolling, s.info.cycles, t.elapsed().as_secs_f64())
         }
         Err(e) => println!(
-            "M {:.3} L {:.2} dom {:?} far {} ERROR {}",
+            "M {:.3} L {:.2} dom {:?} far {:?} ERROR {}",
             g.m,
             g.l,
             (
@@ -175,7 +178,7 @@ fn main() {
                 params.domain.x_end,
                 params.domain.y_half
             ),
-            params.far_field,
+            params.edge,
             e
         ),
     }

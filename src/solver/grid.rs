@@ -289,12 +289,9 @@ impl Grid {
     /// `f(X, Y)` at the boundary nodes, zero inside.
     pub fn sample_boundary(&self, f: impl Fn(f64, f64) -> f64) -> Vec<f64> {
         let mut v = vec![0.0; self.len()];
-        for j in 0..self.py() {
-            for i in 0..self.px() {
-                if i == 0 || j == 0 || i == self.nx || j == self.ny {
-                    v[self.idx(i, j)] = f(self.x(i), self.y(j));
-                }
-            }
+        for k in self.boundary() {
+            let (i, j) = (k % self.px(), k / self.px());
+            v[k] = f(self.x(i), self.y(j));
         }
         v
     }

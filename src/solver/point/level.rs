@@ -126,22 +126,21 @@ pub(crate) struct Level {
 }
 
 impl Level {
-    /// A level on `grid` whose boundary takes the far-field pressure `far` for the film
-    /// constant `h0` and whose force balance leaves `outside_load` to the far field.
-    pub fn new(grid: Grid, model: &Model, far: &FarField, h0: f64, outside_load: f64) -> Self {
+    /// A level on `grid` with `P = 0` on its boundary and the whole load: the far field, if
+    /// any, is put on it when it becomes the top ([`Level::set_far_field`]).
+    pub fn new(grid: Grid, model: &Model) -> Self {
         let n = grid.len();
-        let edge = grid.sample_boundary(|x, y| far.pressure(x, y, h0));
         Level {
             deformation: Deformation::new(&grid, model.kappa, model.ell_k),
-            p: edge.clone(),
+            p: vec![0.0; n],
             f: vec![0.0; n],
             h: vec![0.0; n],
             hrhs: grid.sample(|x, y| model.geometry(x, y)),
             w: vec![0.0; n],
             pold: vec![0.0; n],
-            rg: -(LOAD - outside_load),
-            edge,
-            load: LOAD - outside_load,
+            rg: -LOAD,
+            edge: vec![0.0; n],
+            load: LOAD,
             ex: vec![0.0; n],
             ey: vec![0.0; n],
             rho: vec![1.0; n],
@@ -269,19 +268,17 @@ impl Level {
         self.grid.at_centre(&self.h)
     }
 
-    /// The far field for the film constant `h0` on the boundary ([`Level::edge`]) and its
-    /// outside load in the force balance ([`Level::load`]).
-    pub fn set_far_field(&mut self, far: &FarField, h0: f64, outside_load: f64) {
+    /// The far field `far` for the film constant `h0` as this level's top-level boundary
+    /// condition: its pressure on the boundary nodes ([`Level::edge`], copied into `P`) and
+    /// its outside load taken off the force balance ([`Level::load`], `rg`).
+    pub fn set_far_field(&mut self, far: &FarField, h0: f64) {
         self.edge = self.grid.sample_boundary(|x, y| far.pressure(x, y, h0));
-        self.load = LOAD - outside_load;
-    }
-
-    /// Puts the far-field pressure on the boundary nodes.
-    pub fn set_edge(&mut self) {
-        let g = self.grid;
-        for k in g.boundary() {
+        self.load = LOAD - far.outside_load(&self.grid.domain(), h0);
+        self.rg = -self.load;
+        for k in self.grid.boundary() {
             self.p[k] = self.edge[k];
         }
+        self.invalidate();
     }
 
     /// Force-balance defect `sum P hx hy + rg`.

@@ -42,12 +42,25 @@ pub const SOLVER_REVISION: &str = "point-10";
 pub const MAX_LEVEL: u32 = 9;
 /// Lowest level the solver accepts as the finest.
 pub const MIN_LEVEL: u32 = 3;
-/// Rounds of Newton-Krylov and refitting of a fitted far field ([`Params::far_field_fitted`]).
+/// Rounds of Newton-Krylov and refitting of a fitted far field ([`Edge::FittedFarField`]).
 const FAR_FIELD_ROUNDS: usize = 8;
 /// Relative change of the far field's amplitude below which it counts as settled.
 const FAR_FIELD_SETTLED: f64 = 1e-4;
 /// Residual growth over the best cycle that stops the solve as diverged.
 const DIVERGENCE_FACTOR: f64 = 1e3;
+
+/// The condition on the domain's edge.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Edge {
+    /// `P = 0`, the paper's.
+    Zero,
+    /// The flooded inlet's asymptote, its amplitude fixed a priori from `lambda`, and the
+    /// load it carries outside taken off the force balance ([`far_field`]).
+    FarField,
+    /// [`Edge::FarField`] with its amplitude fitted to the solution a few cells inside the
+    /// edge, before each finest cycle and between Newton-Krylov solves.
+    FittedFarField,
+}
 
 /// Solver parameters, with the defaults of the paper's working resolution.
 #[derive(Debug, Clone, PartialEq)]
@@ -61,15 +74,10 @@ pub struct Params {
     pub coarsest_level: u32,
     /// Computational domain.
     pub domain: Domain,
-    /// The domain's edge takes the pressure of the flooded inlet's asymptote and the force
-    /// balance leaves it the load it carries outside ([`far_field`]). Default false, the
-    /// paper's `P = 0` at the edge: the far field is under study (`docs/DOMAIN_NOTES.md`)
-    /// and not yet part of the case -> parameters rule.
-    pub far_field: bool,
-    /// With [`Params::far_field`]: the asymptote's amplitude fitted to the solution a few
-    /// cells inside the edge before each finest cycle and between Newton-Krylov solves,
-    /// instead of fixed from `lambda`. Default false (under study).
-    pub far_field_fitted: bool,
+    /// The condition on the domain's edge ([`Edge`]). Default [`Edge::Zero`], the paper's
+    /// `P = 0`: the far field is under study (`docs/DOMAIN_NOTES.md`) and not yet part of
+    /// the case -> parameters rule.
+    pub edge: Edge,
     /// Relaxations before coarsening. Default 2.
     pub pre_sweeps: usize,
     /// Relaxations after the correction. Default 1.
@@ -157,8 +165,7 @@ impl Default for Params {
             level: 7,
             coarsest_level: 4,
             domain: Domain::default(),
-            far_field: false,
-            far_field_fitted: false,
+            edge: Edge::Zero,
             pre_sweeps: 2,
             post_sweeps: 1,
             coarsest_sweeps: 100,
@@ -333,7 +340,7 @@ fn converge_by_cycles(
     let mut best_residual = f64::INFINITY;
     let mut outputs = stopping::OutputHistory::default();
     for cycle in 1..=params.max_cycles {
-        if params.far_field && params.far_field_fitted {
+        if params.edge == Edge::FittedFarField {
             mg.fit_far_field(k);
         }
         let before = mg.levels[k].p.clone();
@@ -416,7 +423,7 @@ fn finish(
     history: &mut Vec<f64>,
 ) -> newton::Outcome {
     let mut outcome = newton_solve(mg, k, params, observe, history);
-    if !(params.far_field && params.far_field_fitted) {
+    if params.edge != Edge::FittedFarField {
         return outcome;
     }
     // A fitted far field: Newton with the edge frozen, the amplitude refitted to its
@@ -586,7 +593,11 @@ pub fn solve(
     // Initial Delta: the Eq. (10) central film minus the Hertzian approach (W(0) = 1).
     let h0 = hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0;
     // Without the far field: its lambda-0 form, zero everywhere.
-    let far_lambda = if params.far_field { g.lambda } else { 0.0 };
+    let far_lambda = if params.edge == Edge::Zero {
+        0.0
+    } else {
+        g.lambda
+    };
     let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity);
     let mut mg = Hierarchy::new(model, far, &params.domain, params, h0);
     mg.rolling_scale = params.rolling_friction.then(|| g.rolling_stress_scale());
@@ -604,7 +615,6 @@ pub fn solve(
         let l0 = &mut mg.levels[0];
         let grid = l0.grid;
         l0.p = grid.sample(crate::physics::hertz::Hertz::pressure);
-        l0.set_edge();
     }
     let mut starts = Vec::with_capacity(top);
     for k in 0..top {

@@ -16,8 +16,6 @@ pub(crate) struct Hierarchy {
     pub model: Model,
     /// The flooded inlet beyond the domain.
     far: FarField,
-    /// Its load outside the domain.
-    outside_load: f64,
     pub h0: f64,
     /// The scale of the rolling friction (`Problem`'s), where it is computed: the cycles'
     /// stopping rule watches it.
@@ -33,15 +31,13 @@ pub(crate) struct Hierarchy {
 impl Hierarchy {
     /// Builds every level from `params.coarsest_level` to `params.level` on `domain`.
     pub fn new(model: Model, far: FarField, domain: &Domain, params: &Params, h0: f64) -> Self {
-        let outside_load = far.outside_load(domain, h0);
         let levels = (params.coarsest_level..=params.level)
-            .map(|l| Level::new(Grid::level(domain, l), &model, &far, h0, outside_load))
+            .map(|l| Level::new(Grid::level(domain, l), &model))
             .collect();
         Hierarchy {
             levels,
             model,
             far,
-            outside_load,
             h0,
             rolling_scale: None,
             gain: params.force_balance_gain,
@@ -55,13 +51,7 @@ impl Hierarchy {
     pub fn add_finer_level(&mut self, domain: &Domain) -> usize {
         let level = self.finest().grid.nx.trailing_zeros();
         let grid = Grid::level(domain, level);
-        self.levels.push(Level::new(
-            grid,
-            &self.model,
-            &self.far,
-            self.h0,
-            self.outside_load,
-        ));
+        self.levels.push(Level::new(grid, &self.model));
         self.levels.len() - 1
     }
 
@@ -140,16 +130,11 @@ impl Hierarchy {
     /// problem, with the far field of the present film constant on its boundary.
     pub fn make_top(&mut self, k: usize) {
         let model = self.model;
-        let domain = self.levels[k].grid.domain();
-        self.outside_load = self.far.outside_load(&domain, self.h0);
         let level = &mut self.levels[k];
-        level.set_far_field(&self.far, self.h0, self.outside_load);
         let g = level.grid;
         level.hrhs = g.sample(|x, y| model.geometry(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
-        level.rg = -level.load;
-        level.set_edge();
-        level.invalidate();
+        level.set_far_field(&self.far, self.h0);
     }
 
     /// Refits the far field's amplitude to level `k`'s pressure and puts the result on its
@@ -157,11 +142,7 @@ impl Hierarchy {
     pub fn fit_far_field(&mut self, k: usize) -> f64 {
         let level = &mut self.levels[k];
         let change = self.far.fit(&level.grid, &level.p, self.h0);
-        self.outside_load = self.far.outside_load(&level.grid.domain(), self.h0);
-        level.set_far_field(&self.far, self.h0, self.outside_load);
-        level.rg = -level.load;
-        level.set_edge();
-        level.invalidate();
+        level.set_far_field(&self.far, self.h0);
         change
     }
 

@@ -271,9 +271,7 @@ mod tests {
         let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
         let model = Model::new(&problem);
         let grid = Grid::level(&Domain::default(), 4);
-        // No far field (lambda 0): the test's boundary is P = 0.
-        let far = super::super::far_field::FarField::new(0.5, 1.0, 0.0, problem.viscosity);
-        let mut level = Level::new(grid, &model, &far, 0.0, 0.0);
+        let mut level = Level::new(grid, &model);
         level.p = grid.sample(Hertz::pressure);
         let h0 = 0.3;
         level.update_film(h0);
