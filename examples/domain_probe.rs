@@ -77,13 +77,8 @@ fn main() {
         Domain::for_far_field_with(&problem, ratio, share)
     } else if a[k + 1] == "auto2" {
         // The rule's domain with its inlet and side extents doubled at the same mesh size
-        // (run it one level finer): the inlet grows by the domain's width.
-        let d = Domain::for_far_field_with(&problem, ratio, share);
-        Domain {
-            x_start: 2.0 * d.x_start - d.x_end,
-            x_end: d.x_end,
-            y_half: 2.0 * d.y_half,
-        }
+        // (run it one level finer).
+        Domain::for_far_field_with(&problem, ratio, share).doubled()
     } else {
         Domain {
             x_start: f(k + 1),

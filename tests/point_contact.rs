@@ -535,14 +535,17 @@ fn the_cycles_do_not_stop_on_a_fixed_point_that_is_not_a_solution() {
 /// domain on a heavy case whose inlet carries no friction to speak of: the Figs. 1-3 corner
 /// M 1000, L 15, S-bar 0.1 at level 5. The Table 4 case at level 7 moves 4e-6 between them
 /// (docs/DOMAIN_NOTES.md); 1e-4 leaves room for level 5's coarser cavitation boundary (the
-/// load balance itself is held to 1e-4).
+/// load balance itself is held to 1e-4). On the paper's `P = 0` edge, so that the domain
+/// carries the whole load and only the region differs (with the far field the domain's
+/// share of the load is 5e-4 less than the applied load the loaded film divides by).
 #[test]
 fn the_loaded_film_region_leaves_a_heavy_contact_unchanged() {
-    use repro::solver::point::FrictionRegion;
+    use repro::solver::point::{Edge, FrictionRegion};
     let p = problem(&dimensionless(1000.0, 15.0, 0.1, Rheology::Eyring));
     let at = |region| {
         let params = Params {
             friction_region: region,
+            edge: Edge::Zero,
             ..Params::for_problem(&p, 5)
         };
         solve(&p, &params, None).expect("converges")

@@ -87,6 +87,27 @@ impl Contact {
         }
     }
 
+    /// The domain check of a point contact: solved at `level` with its parameters' domain's
+    /// inlet and sides doubled ([`crate::solver::grid::Domain::doubled`]), on the mesh of
+    /// `level - 1` on its own domain; `None` for a line contact.
+    pub fn solve_doubled(&self, level: u32) -> Option<Result<Measured, SolveError>> {
+        match self {
+            Contact::Point { problem, params } => {
+                let rule = params(problem, level);
+                let doubled = point::Params {
+                    domain: rule.domain.doubled(),
+                    ..rule
+                };
+                Some(point::solve(problem, &doubled, None).map(|s| Measured {
+                    h_central: s.film.h_central,
+                    mu_bar: s.friction.sliding,
+                    cycles: s.info.cycles,
+                }))
+            }
+            Contact::Line { .. } => None,
+        }
+    }
+
     /// "point" or "line".
     pub fn kind(&self) -> &'static str {
         match self {
@@ -292,8 +313,46 @@ pub struct CaseStudy {
     pub levels: Vec<LevelRun>,
     /// The reference of the errors (`None` when nothing converged).
     pub reference: Option<Reference>,
+    /// The domain check of a point contact ([`DomainCheck`]).
+    pub domain: Option<DomainCheck>,
     /// Points per level (for the CSV).
     points: Vec<String>,
+}
+
+/// How much the domain moves a point contact's outputs: the case solved on its domain at
+/// the second-finest level of the study against its inlet and sides doubled at the finest
+/// (the same mesh).
+#[derive(Debug, Clone)]
+pub struct DomainCheck {
+    /// The doubled domain's level.
+    pub level: u32,
+    /// The relative change of the central film and of sliding `mu-bar`, or why the doubled
+    /// domain's solve failed.
+    pub change: Result<(f64, f64), SolveError>,
+}
+
+impl DomainCheck {
+    /// The check of `case` whose runs are `runs`: `None` for a line contact, or when the
+    /// study has no two consecutive finest levels or the coarser one failed.
+    fn of(case: &StudyCase, runs: &[LevelRun]) -> Option<DomainCheck> {
+        let [.., coarse, fine] = runs else {
+            return None;
+        };
+        let own = coarse.outcome.as_ref().ok()?;
+        if fine.level != coarse.level + 1 {
+            return None;
+        }
+        let doubled = case.contact.solve_doubled(fine.level)?;
+        Some(DomainCheck {
+            level: fine.level,
+            change: doubled.map(|d| {
+                (
+                    (d.h_central / own.h_central - 1.0).abs(),
+                    (d.mu_bar / own.mu_bar - 1.0).abs(),
+                )
+            }),
+        })
+    }
 }
 
 fn median(mut v: Vec<f64>) -> f64 {
@@ -408,6 +467,7 @@ pub fn run(
                 targets: case.targets,
                 level_offset: case.level_offset,
                 reference: reference(&runs),
+                domain: DomainCheck::of(case, &runs),
                 points: runs.iter().map(|r| case.contact.points(r.level)).collect(),
                 levels: runs,
             }
@@ -434,9 +494,12 @@ pub fn to_csv(studies: &[CaseStudy]) -> String {
         "cycles",
         "seconds",
         "status",
+        "domain_h_central_change",
+        "domain_mu_bar_change",
     ];
     let mut rows = Vec::new();
     for s in studies {
+        let domain = s.domain.as_ref().and_then(|d| d.change.as_ref().ok());
         for (run, points) in s.levels.iter().zip(&s.points) {
             let r = s.reference;
             let e = s.errors(run);
@@ -478,6 +541,8 @@ pub fn to_csv(studies: &[CaseStudy]) -> String {
                 cycles,
                 format!("{:.3}", run.seconds),
                 status,
+                opt(domain.map(|d| d.0)),
+                opt(domain.map(|d| d.1)),
             ]);
         }
     }
@@ -609,6 +674,17 @@ pub fn to_text(studies: &[CaseStudy], recs: &[Recommendation]) -> String {
                 )),
             }
         }
+        if let Some(d) = &s.domain {
+            out.push_str(&format!(
+                "  domain: inlet and sides doubled at level {}'s mesh (level {}): {}\n",
+                d.level - 1,
+                d.level,
+                match &d.change {
+                    Ok((h, mu)) => format!("Hc moves {:.2e}, mu-bar {:.2e}", h, mu),
+                    Err(e) => format!("failed: {e}"),
+                }
+            ));
+        }
     }
     out.push_str(&format!(
         "Cheapest level with sliding mu-bar within {} % (every finer level too):\n",
@@ -656,6 +732,7 @@ pub(crate) mod tests {
             targets: &["fig3"],
             level_offset: 0,
             reference: reference(&levels),
+            domain: None,
             points: levels.iter().map(|_| String::new()).collect(),
             levels,
         }

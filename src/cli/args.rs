@@ -236,9 +236,10 @@ pub enum RheologyArg {
 
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum DomainArg {
-    /// The case's domain by the rule every command and target uses (today the wide domain
-    /// below M = 300, the paper's up to M = 4000, the heavy-load one above). The others are
-    /// expert overrides.
+    /// The case's domain by the rule every command and target uses: the paper's from
+    /// M = 300 to 4000, the heavy-load one above, the wide one below, grown further where
+    /// the light, viscous contacts' inlet pressure reaches out (with the flooded inlet's far
+    /// field on its edge in every case). The others are expert overrides (with the same edge).
     Auto,
     /// -2.5 <= X <= 1.5, -2 <= Y <= 2: the paper's (reproduces Table 4).
     Paper,

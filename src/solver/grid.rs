@@ -51,13 +51,13 @@ pub const FAR_FIELD_LOAD_SHARE: f64 = 0.08;
 
 impl Domain {
     /// The domain a problem is solved on, by every command and pipeline (through
-    /// [`crate::solver::point::Params::for_problem`]): for now the one its Moes load calls
-    /// for ([`Domain::for_load`]).
+    /// [`crate::solver::point::Params::for_problem`], which puts the fitted far field on its
+    /// edge): [`Domain::for_far_field`].
     pub fn for_problem(problem: &Problem) -> Domain {
-        Domain::for_load(problem.groups.m)
+        Domain::for_far_field(problem)
     }
 
-    /// The domain a problem needs with the far-field edge (not yet the rule of
+    /// The domain a problem needs with the far-field edge (the rule of
     /// [`Domain::for_problem`], see `docs/DOMAIN_NOTES.md`): the base domain of its load
     /// ([`Domain::for_load`]), its inlet and sides pushed out where the estimated film constant `H0` would make the
     /// rigid gap `m r^2` at the edge less than `H0 / FAR_FIELD_GAP_RATIO`, so that the
@@ -95,6 +95,17 @@ impl Domain {
             x_start: base.x_start.min(-inlet),
             x_end: base.x_end.max((inlet / 2.0).ceil()),
             y_half: base.y_half.max(reach(1.0 - problem.shape)),
+        }
+    }
+
+    /// This domain with its inlet and sides doubled at the same mesh size one level finer
+    /// (the inlet grows by the domain's length, the half-width doubles, the outlet stays):
+    /// the domain-convergence check of `docs/DOMAIN_NOTES.md` and `repro accuracy`.
+    pub fn doubled(&self) -> Domain {
+        Domain {
+            x_start: 2.0 * self.x_start - self.x_end,
+            x_end: self.x_end,
+            y_half: 2.0 * self.y_half,
         }
     }
 
@@ -324,6 +335,15 @@ impl Grid {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The doubled domain one level finer has the same mesh and contains the original.
+    #[test]
+    fn a_doubled_domain_one_level_finer_keeps_the_mesh() {
+        let d = Domain::for_load(20.0);
+        let (a, b) = (Grid::level(&d, 6), Grid::level(&d.doubled(), 7));
+        assert!((a.hx - b.hx).abs() < 1e-12 && (a.hy - b.hy).abs() < 1e-12);
+        assert_eq!((b.x0, b.y0), (-10.5, -6.0));
+    }
 
     #[test]
     fn levels_have_the_paper_point_counts_and_the_origin_is_a_node() {

@@ -178,10 +178,15 @@ pub enum SolveError {
         residual_history: Vec<f64>,
     },
     /// The film collapsed (`H <= 0` somewhere): the grid is too coarse for this load.
-    #[error("film thickness became non-positive (min H = {h_min:.3e}) at cycle {cycle} (history: {history})", history = format_history(residual_history))]
+    #[error("film thickness became non-positive (min H = {h_min:.3e}) at level {level}, cycle {cycle}: {advice} (history: {history})", history = format_history(residual_history), advice = level_advice(*level_needed))]
     FilmCollapse {
         /// Minimum film.
         h_min: f64,
+        /// The finest level solved on.
+        level: u32,
+        /// The level estimated to resolve the film, where the solver can estimate it
+        /// ([`crate::solver::point::level_to_resolve`]).
+        level_needed: Option<u32>,
         /// Cycle.
         cycle: usize,
         /// Residual after each completed cycle.
@@ -207,6 +212,21 @@ impl SolveError {
             } => residual_history,
             SolveError::InvalidParams(_) => &[],
         }
+    }
+}
+
+/// What a collapsed film asks of the grid.
+fn level_advice(needed: Option<u32>) -> String {
+    use crate::solver::point::MAX_LEVEL;
+    match needed {
+        Some(n) if n <= MAX_LEVEL => {
+            format!("the grid cannot resolve this film; level {n} is estimated to (--level {n})")
+        }
+        Some(n) => format!(
+            "the grid cannot resolve this film; level {n} is estimated to, beyond the \
+             solver's finest level {MAX_LEVEL}"
+        ),
+        None => "the grid cannot resolve this film; a finer level may".to_string(),
     }
 }
 

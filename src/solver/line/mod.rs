@@ -266,6 +266,8 @@ pub fn solve(
     if params.require_positive_film && film.h_min <= 0.0 {
         return Err(SolveError::FilmCollapse {
             h_min: film.h_min,
+            level: params.level,
+            level_needed: None,
             cycle: cycles,
             residual_history: history,
         });
