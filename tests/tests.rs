@@ -2,6 +2,7 @@
 
 mod check;
 mod cli;
+mod continuation;
 mod line_contact;
 mod lss;
 mod mastercurve;

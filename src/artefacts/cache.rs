@@ -5,9 +5,12 @@
 //! the SHA-256 of payload and stamp, checked on read: a corrupt entry is reported and
 //! recomputed, never trusted.
 
+use crate::solver::point::Start;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
 use sha2::{Digest, Sha256};
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
 
 /// Lower-case hex SHA-256 of `bytes`.
 pub fn sha256_hex(bytes: &[u8]) -> String {
@@ -113,16 +116,49 @@ pub enum Lookup<T> {
     Corrupt(String),
 }
 
-/// A cache folder.
+/// A cache folder, and in memory the solutions its process solved, for the cases that start
+/// from them (continuation: [`crate::artefacts::base`]).
 #[derive(Debug, Clone)]
 pub struct Cache {
     dir: PathBuf,
+    starts: Arc<Mutex<Starts>>,
 }
+
+/// The solutions kept in memory, by cache key, within [`STARTS_MEMORY`].
+#[derive(Debug, Default)]
+struct Starts {
+    by_key: HashMap<String, Arc<Start>>,
+    bytes: usize,
+}
+
+/// Memory the kept solutions may take: 2 GiB, the pressure fields of about 4 000 level-7
+/// solves (a run of every target holds about 1 500).
+const STARTS_MEMORY: usize = 2 << 30;
 
 impl Cache {
     /// A cache in `dir` (created on first write).
     pub fn new(dir: impl Into<PathBuf>) -> Self {
-        Cache { dir: dir.into() }
+        Cache {
+            dir: dir.into(),
+            starts: Arc::default(),
+        }
+    }
+
+    /// The solution of `key` solved by this process, if kept. A solution solves to the same
+    /// bits whoever solves it, so a kept one and a fresh one are the same start.
+    pub fn start(&self, key: &str) -> Option<Arc<Start>> {
+        let starts = self.starts.lock().unwrap_or_else(|e| e.into_inner());
+        starts.by_key.get(key).cloned()
+    }
+
+    /// Keeps the solution of `key` for the cases that start from it, while the memory allows.
+    pub fn keep_start(&self, key: &str, start: Arc<Start>) {
+        let mut starts = self.starts.lock().unwrap_or_else(|e| e.into_inner());
+        let bytes = start.p.len() * std::mem::size_of::<f64>();
+        if starts.bytes + bytes <= STARTS_MEMORY && !starts.by_key.contains_key(key) {
+            starts.bytes += bytes;
+            starts.by_key.insert(key.to_string(), start);
+        }
     }
 
     /// The folder.

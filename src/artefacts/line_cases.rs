@@ -80,6 +80,7 @@ pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem
                     problem: problem.clone(),
                     params,
                 },
+                base: None,
             };
             Ok((job, case, problem))
         })

@@ -7,6 +7,7 @@
 //! a run of them all and the [`snapshot`] comparison.
 
 pub mod accuracy;
+pub mod base;
 pub mod cache;
 pub mod csv;
 pub mod fit;

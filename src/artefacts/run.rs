@@ -3,18 +3,21 @@
 //! count, results collected in job order, through a [`Store`]: the cache reused and filled,
 //! or read only (`--offline`, where a missing entry is an error naming the case).
 
+use super::base::base_of;
 use super::cache::{key_of, Cache, Lookup, Stamp};
-use crate::physics::case::{Case, Problem};
+use crate::physics::case::{Case, CaseError, Problem};
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{ThermalContact, TARGET_INPUTS, THERMAL_REVISION};
-use crate::solver::output::{Film, Friction, Info, SolveError};
-use crate::solver::point::{Params, SOLVER_REVISION};
+use crate::solver::output::{Film, Friction, Info, SolveError, StartKind};
+use crate::solver::point::{Params, Start, SOLVER_REVISION};
 use crate::solver::thermal::{point_thermal, Thermal};
 use crate::solver::{line, point};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Arc;
 
 /// What a solve yields, as cached.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -41,6 +44,10 @@ pub struct Record {
     pub residual: f64,
     /// Force-balance error.
     pub load_error: f64,
+    /// Where the solve started: cold, warm from its base, or cold after the warm start
+    /// failed (the fallback).
+    #[serde(default)]
+    pub start: StartKind,
     /// The thermal post-process of a physical point contact with a Table 1 lubricant, one per
     /// entry of [`TARGET_INPUTS`] in its order (steel, then through-hardened steel); empty for
     /// dimensionless cases, line contacts and where the post-process failed.
@@ -65,6 +72,7 @@ impl Record {
             newton_steps: info.newton_steps,
             residual: info.residual(),
             load_error: info.load_error,
+            start: info.start,
             thermal: Vec::new(),
         }
     }
@@ -168,18 +176,21 @@ impl CaseRun {
 }
 
 /// The cache key of a case at the given solver parameters: the case, the parameters a target
-/// can set (level, domain, rolling friction), the solver revision, which is raised whenever
-/// a default parameter or the numerics change, and the thermal post-process's inputs and
-/// revision.
-pub fn case_key(case: &Case, params: &Params) -> String {
+/// can set (level, domain, rolling friction, the film check), the solver revision, which is
+/// raised whenever a default parameter or the numerics change, the thermal post-process's
+/// inputs and revision, and the key of the base it starts from ([`base_of`]), whose
+/// solution is part of its arithmetic.
+pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String {
     let d = &params.domain;
     key_of(&(
         case,
         params.level,
         (d.x_start, d.x_end, d.y_half),
         params.rolling_friction,
+        (params.require_positive_film, params.film_refinement_levels),
         SOLVER_REVISION,
         (THERMAL_REVISION, TARGET_INPUTS),
+        base_key,
     ))
 }
 
@@ -218,15 +229,19 @@ pub enum Work {
 }
 
 impl Work {
-    /// Solves it (no progress observer).
-    pub fn solve(&self) -> Outcome {
+    /// Solves it (no progress observer), a point contact from `start` where one is given
+    /// (its base's solution), and the start it gives its own members where `keep_start`.
+    pub fn solve(&self, start: Option<&Start>, keep_start: bool) -> (Outcome, Option<Start>) {
         match self {
             Work::Point {
                 problem,
                 params,
                 thermal,
             } => {
-                let r = point::solve(problem, params, None);
+                let r = match start {
+                    Some(s) => point::solve_from(problem, params, s, None),
+                    None => point::solve(problem, params, None),
+                };
                 let mut outcome = Outcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info)));
                 if let (Ok(s), Some(contact), Outcome::Solved(record)) = (&r, thermal, &mut outcome)
                 {
@@ -237,11 +252,15 @@ impl Work {
                         .collect::<Result<_, _>>()
                         .unwrap_or_default();
                 }
-                outcome
+                let kept = keep_start.then(|| r.as_ref().ok().map(Start::of)).flatten();
+                (outcome, kept)
             }
             Work::Line { problem, params } => {
                 let r = line::solve(problem, params, None);
-                Outcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info)))
+                (
+                    Outcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
+                    None,
+                )
             }
         }
     }
@@ -256,6 +275,60 @@ pub struct Job {
     pub label: String,
     /// What to solve.
     pub work: Work,
+    /// The job of the base it starts from ([`base_of`]), solved first.
+    pub base: Option<Box<Job>>,
+}
+
+impl Job {
+    /// The key of the family's root: the base at the end of the chain of bases (its own key
+    /// where it has no base). Shards keep a family together.
+    pub fn family(&self) -> &str {
+        match &self.base {
+            Some(b) => b.family(),
+            None => &self.key,
+        }
+    }
+
+    /// The bases below it, the nearest first.
+    fn bases(&self) -> impl Iterator<Item = &Job> {
+        std::iter::successors(self.base.as_deref(), |b| b.base.as_deref())
+    }
+}
+
+/// The job of a point case at `params` (the one rule's, [`Params::for_problem`], or a
+/// target's own on top of them), with the job of its base ([`base_of`]) at the same
+/// parameters; `label` names it.
+pub fn point_job(
+    case: &Case,
+    problem: &Problem,
+    params: Params,
+    label: String,
+    lubricants: &LubricantTable,
+) -> Result<Job, CaseError> {
+    let base = match base_of(case) {
+        Some(b) => {
+            let bp = Problem::from_case(&b, lubricants)?;
+            let label = format!("base {}", describe(&b, params.level));
+            Some(Box::new(point_job(
+                &b,
+                &bp,
+                params.clone(),
+                label,
+                lubricants,
+            )?))
+        }
+        None => None,
+    };
+    Ok(Job {
+        key: case_key(case, &params, base.as_deref().map(|b| b.key.as_str())),
+        label,
+        work: Work::Point {
+            problem: problem.clone(),
+            params: Box::new(params),
+            thermal: thermal_contact(case, problem, lubricants).map(Box::new),
+        },
+        base,
+    })
 }
 
 /// Where results come from and go.
@@ -321,6 +394,13 @@ pub fn missing_message(missing: &[(String, &Job, Option<String>)], cache: &Cache
 /// Runs `jobs` through `store`: `warn` hears of corrupt entries and cache write failures,
 /// `progress` of every finished job. Offline, every job must have an entry, or the error
 /// lists those without one (`target` names them).
+///
+/// In two phases: first the bases that the jobs missing from the cache start from (largest
+/// first, a layer of the chains of bases at a time: the Eyring twin of a limited case before
+/// the case, its own base before the twin), each solved whether or not its own entry is
+/// cached, for its solution is what its members start from, and kept in memory; then the
+/// jobs, each from its base's solution ([`point::solve_from`]). A base solves to the same
+/// bits whoever solves it, so a job's result depends on its case and key alone.
 pub fn run_jobs(
     target: &str,
     jobs: &[Job],
@@ -338,60 +418,173 @@ pub fn run_jobs(
             return Err(missing_message(&named, cache));
         }
     }
+    let looked: Vec<Option<Done>> = jobs
+        .par_iter()
+        .map(
+            |job| match store.cache().map(|c| c.get::<Outcome>(&job.key)) {
+                Some(Lookup::Hit(outcome, stamp)) => Some(Done {
+                    outcome,
+                    stamp,
+                    cached: true,
+                }),
+                Some(Lookup::Corrupt(why)) => {
+                    warn(format!("corrupt cache entry recomputed: {why}"));
+                    None
+                }
+                _ => None,
+            },
+        )
+        .collect();
+    if matches!(store, Store::Offline(_)) {
+        return jobs
+            .iter()
+            .zip(looked)
+            .map(|(job, d)| {
+                d.ok_or_else(|| {
+                    format!(
+                        "--offline: {target}: {} [key {}] vanished from the cache during the run",
+                        job.label, job.key
+                    )
+                })
+            })
+            .collect();
+    }
+    // The solutions kept in memory (those of this process's earlier runs), then the bases
+    // the missing jobs need and lack, by key, with their depth in the chain (0 for a base
+    // solved cold or from a kept solution).
+    let kept = |key: &str| store.cache().and_then(|c| c.start(key));
+    let mut starts: HashMap<&str, Arc<Start>> = HashMap::new();
+    let mut bases: BTreeMap<&str, &Job> = BTreeMap::new();
+    for (job, d) in jobs.iter().zip(&looked) {
+        if d.is_some() {
+            continue;
+        }
+        for b in job.bases() {
+            if starts.contains_key(b.key.as_str()) || bases.contains_key(b.key.as_str()) {
+                break;
+            }
+            match kept(&b.key) {
+                Some(k) => {
+                    starts.insert(b.key.as_str(), k);
+                    break;
+                }
+                None => {
+                    bases.insert(b.key.as_str(), b);
+                }
+            }
+        }
+    }
+    let depth_of = |mut b: &Job| {
+        let mut depth = 0;
+        while let Some(below) = b.base.as_deref() {
+            if !bases.contains_key(below.key.as_str()) {
+                break;
+            }
+            depth += 1;
+            b = below;
+        }
+        depth
+    };
+    let layers: Vec<(usize, &Job)> = bases.values().map(|b| (depth_of(b), *b)).collect();
+    let solve_one = |job: &Job, start: Option<&Start>| {
+        let clock = std::time::Instant::now();
+        let (outcome, start) = job.work.solve(start, true);
+        let stamp = Stamp::now(clock.elapsed().as_secs_f64());
+        let start = start.map(Arc::new);
+        if let Some(c) = store.cache() {
+            if let Err(e) = c.put(&job.key, &outcome, &stamp) {
+                warn(format!(
+                    "cannot write cache entry in {}: {e}",
+                    c.dir().display()
+                ));
+            }
+            if let Some(s) = &start {
+                c.keep_start(&job.key, s.clone());
+            }
+        }
+        (
+            Done {
+                outcome,
+                stamp: Some(stamp),
+                cached: false,
+            },
+            start,
+        )
+    };
+    let mut solved: HashMap<&str, Done> = HashMap::new();
+    let base_total = bases.len();
+    let bases_done = AtomicUsize::new(0);
+    let depth = layers.iter().map(|(d, _)| d + 1).max().unwrap_or(0);
+    for layer in 0..depth {
+        let mut this: Vec<&Job> = layers
+            .iter()
+            .filter(|(d, _)| *d == layer)
+            .map(|(_, j)| *j)
+            .collect();
+        this.sort_by(|a, b| weight(b).total_cmp(&weight(a)));
+        let results: Vec<(&str, Done, Option<Arc<Start>>)> = this
+            .par_iter()
+            .map(|b| {
+                let start = b.base.as_ref().and_then(|bb| starts.get(bb.key.as_str()));
+                let (done, kept) = solve_one(b, start.map(|s| s.as_ref()));
+                progress(RunProgress {
+                    done: bases_done.fetch_add(1, Ordering::Relaxed) + 1,
+                    total: base_total,
+                    cached: 0,
+                    phase: Phase::Bases,
+                });
+                (b.key.as_str(), done, kept)
+            })
+            .collect();
+        for (key, done, kept) in results {
+            if let Some(k) = kept {
+                starts.insert(key, k);
+            }
+            solved.insert(key, done);
+        }
+    }
     let done = AtomicUsize::new(0);
     let cached_count = AtomicUsize::new(0);
     let total = jobs.len();
     let runs = jobs
         .par_iter()
-        .map(|job| {
-            let looked = store.cache().map(|c| c.get::<Outcome>(&job.key));
-            let run = match looked {
-                Some(Lookup::Hit(outcome, stamp)) => Ok(Done {
-                    outcome,
-                    stamp,
-                    cached: true,
-                }),
-                _ if matches!(store, Store::Offline(_)) => Err(format!(
-                    "--offline: {target}: {} [key {}] vanished from the cache during the run",
-                    job.label, job.key
-                )),
-                other => {
-                    if let Some(Lookup::Corrupt(why)) = other {
-                        warn(format!("corrupt cache entry recomputed: {why}"));
-                    }
-                    let start = std::time::Instant::now();
-                    let outcome = job.work.solve();
-                    let stamp = Stamp::now(start.elapsed().as_secs_f64());
-                    if let Some(c) = store.cache() {
-                        if let Err(e) = c.put(&job.key, &outcome, &stamp) {
-                            warn(format!(
-                                "cannot write cache entry in {}: {e}",
-                                c.dir().display()
-                            ));
-                        }
-                    }
-                    Ok(Done {
-                        outcome,
-                        stamp: Some(stamp),
-                        cached: false,
-                    })
+        .zip(looked)
+        .map(|(job, looked)| {
+            let run = match (looked, solved.get(job.key.as_str())) {
+                (Some(d), _) => d,
+                (None, Some(d)) => d.clone(),
+                (None, None) => {
+                    let start = job.base.as_ref().and_then(|b| starts.get(b.key.as_str()));
+                    solve_one(job, start.map(|s| s.as_ref())).0
                 }
             };
-            let cached_now = if run.as_ref().is_ok_and(|r| r.cached) {
+            let cached_now = if run.cached {
                 cached_count.fetch_add(1, Ordering::Relaxed) + 1
             } else {
                 cached_count.load(Ordering::Relaxed)
             };
-            let d = done.fetch_add(1, Ordering::Relaxed) + 1;
             progress(RunProgress {
-                done: d,
+                done: done.fetch_add(1, Ordering::Relaxed) + 1,
                 total,
                 cached: cached_now,
+                phase: Phase::Cases,
             });
             run
         })
         .collect::<Vec<_>>();
-    runs.into_iter().collect()
+    Ok(runs)
+}
+
+/// A job's expected cost, for ordering the bases largest first: the heavier the load and
+/// the more viscous the lubricant, the longer a solve (the point contact's `M L`; line
+/// contacts last).
+fn weight(job: &Job) -> f64 {
+    match &job.work {
+        Work::Point {
+            problem, params, ..
+        } => problem.groups.m.max(1.0) * problem.groups.l.max(1.0) * 4f64.powi(params.level as i32),
+        Work::Line { .. } => 0.0,
+    }
 }
 
 /// The revision of the line-contact numerics, part of every line-contact cache key.
@@ -474,15 +667,9 @@ pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<(Job, Problem)>, Str
             let problem =
                 Problem::from_case(c, &lubricants).map_err(|e| format!("case {}: {e}", i + 1))?;
             let params = Params::for_problem(&problem, level);
-            let job = Job {
-                key: case_key(c, &params),
-                label: format!("case {} ({})", i + 1, describe(c, params.level)),
-                work: Work::Point {
-                    problem: problem.clone(),
-                    params: Box::new(params),
-                    thermal: thermal_contact(c, &problem, &lubricants).map(Box::new),
-                },
-            };
+            let label = format!("case {} ({})", i + 1, describe(c, params.level));
+            let job = point_job(c, &problem, params, label, &lubricants)
+                .map_err(|e| format!("case {}: base: {e}", i + 1))?;
             Ok((job, problem))
         })
         .collect()
@@ -491,12 +678,23 @@ pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<(Job, Problem)>, Str
 /// Progress of a run, reported after each case.
 #[derive(Debug, Clone, Copy)]
 pub struct RunProgress {
-    /// Cases done.
+    /// Cases done (of the phase).
     pub done: usize,
-    /// Cases in all.
+    /// Cases in all (of the phase).
     pub total: usize,
     /// Of those done, taken from the cache.
     pub cached: usize,
+    /// Which phase of the run ([`run_jobs`]).
+    pub phase: Phase,
+}
+
+/// The phases of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Phase {
+    /// The bases the missing cases start from.
+    Bases,
+    /// The cases themselves.
+    Cases,
 }
 
 /// Runs `cases` at `level` (see [`point_jobs`]) through `store` (see [`run_jobs`]); `target`

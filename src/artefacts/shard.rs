@@ -2,12 +2,14 @@
 //! solves (1-based), so that N processes (a Slurm job array, GNU parallel, HyperQueue) each
 //! solve their share into a cache, and the caches merge.
 //!
-//! The share is decided by the cache keys alone: the run's distinct keys sorted, the one of
-//! rank r (from 0) goes to shard `r mod N + 1`. Every process of the run lists the same
-//! cases, so they agree on the split without talking to each other; the shares differ in size
-//! by at most one case (a split by hash ranges would leave them unequal by the square root of
-//! their size); and a key's place in the sorted list is unrelated to where its case is in the
-//! sweep, so heavy and light regions of a grid spread over the shards.
+//! The share is decided by the cache keys alone: the run's cases go by family (the cases that
+//! start from one base, [`Job::family`], keyed by the root base's key, so that each base is
+//! solved once), the families' keys sorted, the one of rank r (from 0) to shard `r mod N +
+//! 1`. Every process of the run lists the same cases, so they agree on the split without
+//! talking to each other; the shares differ by at most one family (a split by hash ranges
+//! would leave them unequal by the square root of their size); and a key's place in the
+//! sorted list is unrelated to where its case is in the sweep, so heavy and light regions of
+//! a grid spread over the shards.
 
 use super::run::Job;
 use std::collections::BTreeSet;
@@ -96,11 +98,13 @@ impl Shard {
         })
     }
 
-    /// This shard's share of `jobs`: the distinct keys in sorted order, every `count`-th from
-    /// the `index`-th (see the module documentation). Jobs keep their order.
+    /// This shard's share of `jobs`: whole families ([`Job::family`], the cases that start
+    /// from one base, so that each base is solved by one shard), the distinct family keys in
+    /// sorted order, every `count`-th from the `index`-th (see the module documentation).
+    /// Jobs keep their order; a job listed twice is kept once.
     pub fn select(&self, jobs: Vec<Job>) -> Vec<Job> {
-        let keys: BTreeSet<&str> = jobs.iter().map(|j| j.key.as_str()).collect();
-        let mine: BTreeSet<String> = keys
+        let families: BTreeSet<&str> = jobs.iter().map(|j| j.family()).collect();
+        let mine: BTreeSet<String> = families
             .into_iter()
             .enumerate()
             .filter(|(rank, _)| rank % self.count + 1 == self.index)
@@ -108,7 +112,7 @@ impl Shard {
             .collect();
         let mut seen = BTreeSet::new();
         jobs.into_iter()
-            .filter(|j| mine.contains(&j.key) && seen.insert(j.key.clone()))
+            .filter(|j| mine.contains(j.family()) && seen.insert(j.key.clone()))
             .collect()
     }
 }
@@ -129,24 +133,32 @@ mod tests {
     }
 
     #[test]
-    fn shards_partition_the_distinct_keys_evenly() {
+    fn shards_partition_the_families_evenly() {
         let jobs = fig4_jobs();
         let mut doubled = jobs.clone();
         doubled.extend(jobs.iter().cloned()); // a case listed twice is solved once
         for count in [1, 3, 7] {
             let mut all: Vec<String> = Vec::new();
-            let mut sizes = Vec::new();
+            let mut families = Vec::new();
+            let mut owner: BTreeSet<(String, usize)> = BTreeSet::new();
             for index in 1..=count {
                 let share = Shard::new(index, count).unwrap().select(doubled.clone());
-                sizes.push(share.len());
+                let mine: BTreeSet<String> = share.iter().map(|j| j.family().to_string()).collect();
+                families.push(mine.len());
+                owner.extend(mine.into_iter().map(|f| (f, index)));
                 all.extend(share.into_iter().map(|j| j.key));
             }
             all.sort();
             let mut expect: Vec<String> = jobs.iter().map(|j| j.key.clone()).collect();
             expect.sort();
             assert_eq!(all, expect, "{count} shards: every case once");
-            let (lo, hi) = (sizes.iter().min().unwrap(), sizes.iter().max().unwrap());
-            assert!(hi - lo <= 1, "{count} shards: sizes {sizes:?}");
+            // Fig. 4's 27 families of nine, each in one shard, the shards within one family.
+            assert_eq!(owner.len(), 27, "{count} shards: a family split");
+            let (lo, hi) = (
+                families.iter().min().unwrap(),
+                families.iter().max().unwrap(),
+            );
+            assert!(hi - lo <= 1, "{count} shards: families {families:?}");
         }
         // The same list gives the same share in any order.
         let mut reversed = jobs.clone();

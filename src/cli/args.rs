@@ -351,6 +351,12 @@ pub struct SolveArgs {
     /// Skip the rolling (Poiseuille) part of the friction.
     #[arg(long = "no-rolling", help_heading = "Numerics")]
     pub no_rolling: bool,
+    /// Solve from the Hertzian pressure alone, not from the case's base (the same contact
+    /// at S 0.5 % and tau0 6 MPa, or S-bar 0.1 in Moes groups, solved first, as every sweep
+    /// does): the path of Table 4 and the benchmarks. Without it the result is the bits of
+    /// the case's figure row.
+    #[arg(long, help_heading = "Numerics")]
+    pub cold: bool,
     /// Print one JSON object instead of the summary.
     #[arg(long, help_heading = "Output")]
     pub json: bool,

@@ -10,6 +10,7 @@ use super::print::{print_failure, rolling_text, solve_progress};
 use super::solve::point_report;
 use super::thermal::{self, ThermalReport};
 use anyhow::{bail, Result};
+use repro::artefacts::base::solve_case;
 use repro::artefacts::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
 use repro::artefacts::refined::{Features, REFINED, REFINED_BAND};
 use repro::physics::case::{Case, PhysicalCase, Physics, Problem, Spec};
@@ -19,7 +20,7 @@ use repro::physics::traction::{
     characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
     ViscosityAtPh, ISOTHERMAL_SLIP_MAX,
 };
-use repro::solver::point::{solve as solve_point, Params, PointSolution};
+use repro::solver::point::{Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;
 
@@ -108,7 +109,16 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     let solved = if args.solve {
         let params = Params::for_problem(&problem, level);
         let mut printer = solve_progress(args.quiet || args.json);
-        match solve_point(&problem, &params, Some(&mut printer)) {
+        // As `repro solve` and the sweeps: the case's base first ([`solve_case`]).
+        let mut said = |_: &Case| {};
+        match solve_case(
+            &case,
+            &problem,
+            &params,
+            &lubs,
+            &mut said,
+            Some(&mut printer),
+        ) {
             Ok(s) => Some((problem.clone(), s)),
             Err(e) => {
                 print_failure(&e);

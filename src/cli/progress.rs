@@ -7,7 +7,7 @@ use super::args::TargetArgs;
 use super::config::context;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
-use repro::artefacts::run::RunProgress;
+use repro::artefacts::run::{Phase, RunProgress};
 use repro::artefacts::target::Context;
 use std::io::IsTerminal;
 use std::sync::Mutex;
@@ -72,6 +72,15 @@ impl Progress {
 
     /// Hears of a finished case of target `name` (from any thread).
     pub fn case_done(&self, name: &str, p: RunProgress) {
+        // The bases a run starts from are a phase of their own, with a bar of their own.
+        let phase_name;
+        let name = match p.phase {
+            Phase::Bases => {
+                phase_name = format!("{name} bases");
+                phase_name.as_str()
+            }
+            Phase::Cases => name,
+        };
         match self.mode {
             Mode::Quiet => {}
             Mode::Lines => {

@@ -53,8 +53,11 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
     let (progress, warn) = (|_: &str, _| {}, |_: String| {});
     let ctx = context(&listing, false, &progress, &warn)?;
     let mut keys = BTreeSet::new();
+    // Shards take whole families (the cases that start from one base).
+    let mut families = BTreeSet::new();
     for n in &names {
         for j in targets::jobs(n, &ctx).map_err(|e| anyhow!("{e}"))? {
+            families.insert(j.family().to_string());
             keys.insert(j.key);
         }
     }
@@ -65,7 +68,7 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
             args.targets.join(" ")
         );
     }
-    let tasks = args.tasks.min(solves);
+    let tasks = args.tasks.min(families.len());
     let repro = match &args.repro {
         Some(p) => absolute(p)?,
         None => std::env::current_exe().context("cannot find this repro binary; pass --repro")?,
@@ -102,11 +105,12 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
     }
     if tasks < args.tasks {
         println!(
-            "--tasks {} lowered to {tasks}: there are {solves} solves",
-            args.tasks
+            "--tasks {} lowered to {tasks}: there are {solves} solves in {} families (a task takes whole families)",
+            args.tasks,
+            families.len()
         );
     }
-    let per_task = solves.div_ceil(tasks);
+    let per_task = solves.div_ceil(families.len()) * families.len().div_ceil(tasks);
     let level = args.level.unwrap_or(7);
     let seconds = per_task as f64 * typical_seconds(level) / args.cpus as f64;
     let minutes = seconds / 60.0;

@@ -6,8 +6,10 @@ use super::config::flag_error;
 use super::print::{print_failure, rolling_text, solve_progress, SolveReport};
 use super::thermal;
 use anyhow::{Context as _, Result};
+use repro::artefacts::base::solve_case;
 use repro::artefacts::csv::{num, table, write_atomic};
-use repro::physics::case::Problem;
+use repro::artefacts::run::describe;
+use repro::physics::case::{Case, Problem};
 use repro::physics::line_contact::{LineFilmFormula, LineProblem};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::ShearLaw;
@@ -26,7 +28,25 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     let params = args.params(&problem)?;
     let inputs = args.thermal.inputs()?;
     let mut printer = solve_progress(args.quiet);
-    let s = match point::solve(&problem, &params, Some(&mut printer)) {
+    let solved = if args.cold {
+        point::solve(&problem, &params, Some(&mut printer))
+    } else {
+        let quiet = args.quiet || args.json;
+        let mut said = |b: &Case| {
+            if !quiet {
+                eprintln!("solving its base first: {}", describe(b, params.level));
+            }
+        };
+        solve_case(
+            &case,
+            &problem,
+            &params,
+            &LubricantTable::table1(),
+            &mut said,
+            Some(&mut printer),
+        )
+    };
+    let s = match solved {
         Ok(s) => s,
         Err(e) => {
             print_failure(&e);

@@ -1,7 +1,7 @@
 //! The damping of a Newton step, shared by the line- and point-contact Newton iterations.
 
 /// Smallest damping factor tried.
-const MIN_DAMPING: f64 = 1.0 / 256.0;
+pub(crate) const MIN_DAMPING: f64 = 1.0 / 256.0;
 
 /// Backtracking on the residual norm: `apply(omega)` applies the step scaled by `omega` and
 /// returns the new norm; `omega` is halved from 1 until that norm falls below

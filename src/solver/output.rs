@@ -141,6 +141,22 @@ pub struct Info {
     pub load_error: f64,
     /// Wall time, s.
     pub seconds: f64,
+    /// Where the solve started: cold, warm from a related case's solution, or cold after a
+    /// warm start failed.
+    pub start: StartKind,
+}
+
+/// Where a solve started ([`crate::solver::point::solve_from`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize, Default)]
+#[serde(rename_all = "kebab-case")]
+pub enum StartKind {
+    /// From the Hertzian pressure (full multigrid), as asked.
+    #[default]
+    Cold,
+    /// From a related case's converged solution.
+    Warm,
+    /// From the Hertzian pressure after the warm start failed.
+    Fallback,
 }
 
 impl Info {

@@ -395,7 +395,7 @@ mod tests {
         let lubs = LubricantTable::table1();
         let params = Params::at_level(5);
         let eyring = &sweep.cases[100];
-        let mut keys = vec![case_key(eyring, &params)];
+        let mut keys = vec![case_key(eyring, &params, None)];
         for lb in LAMBDA_BARS {
             let case = limited(eyring, lb).unwrap();
             let problem = Problem::from_case(&case, &lubs).unwrap();
@@ -410,7 +410,7 @@ mod tests {
                 }
                 other => panic!("{other:?}"),
             }
-            keys.push(case_key(&case, &params));
+            keys.push(case_key(&case, &params, None));
         }
         let mut unique = keys.clone();
         unique.sort();

@@ -296,6 +296,7 @@ pub fn solve(
             residual_history: history,
             load_error,
             seconds: start.elapsed().as_secs_f64(),
+            start: crate::solver::output::StartKind::Cold,
         },
     })
 }

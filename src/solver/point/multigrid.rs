@@ -2,7 +2,7 @@
 //! grid (Venner and Lubrecht 2000).
 
 use super::far_field::FarField;
-use super::level::{Level, Model};
+use super::level::{Level, Model, LOAD};
 use super::relax::{relax, LineScratch};
 use super::transfer::{coarsen, correct, interpolate_solution};
 use super::Params;
@@ -135,6 +135,28 @@ impl Hierarchy {
         level.hrhs = g.sample(|x, y| model.geometry(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
         level.set_far_field(&self.far, self.h0);
+    }
+
+    /// How far the far field on level `k`'s edge is from the one of the film constant as it
+    /// is now: the largest change of an edge pressure, relative to the level's largest
+    /// pressure, and the change of the load outside, relative to the applied load (both 0
+    /// without a far field).
+    pub fn edge_drift(&self, k: usize) -> (f64, f64) {
+        let level = &self.levels[k];
+        let g = level.grid;
+        let now = g.sample_boundary(|x, y| self.far.pressure(x, y, self.h0));
+        let largest = level.p.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let change = g
+            .boundary()
+            .map(|i| (now[i] - level.edge[i]).abs())
+            .fold(0.0f64, f64::max);
+        let outside = LOAD - self.far.outside_load(&g.domain(), self.h0);
+        let pressure = if largest > 0.0 {
+            change / largest
+        } else {
+            change
+        };
+        (pressure, (outside - level.load).abs() / LOAD)
     }
 
     /// Refits the far field's amplitude to level `k`'s pressure and puts the result on its

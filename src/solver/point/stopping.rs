@@ -31,6 +31,9 @@ pub(crate) const OUTPUT_TOLERANCE: f64 = 5e-4;
 /// tolerance.
 const RHO_MAX: f64 = 0.95;
 
+/// Cycles [`residual_falls`] needs to judge: the last and the one two before it.
+pub(crate) const FALL_WINDOW: usize = 3;
+
 /// Factor by which the residual must have fallen over the last two cycles for settled
 /// outputs (or a settled pressure) to end the cycles ([`residual_falls`]).
 const RESIDUAL_FALL: f64 = 0.8;
@@ -46,6 +49,7 @@ const RESIDUAL_FALL: f64 = 0.8;
 /// converge still had its residual falling by 0.47-0.81 per cycle (0.22-0.66 over two) where
 /// the outputs settled, as have the light cases whose outputs settle in five cycles.
 pub(crate) fn residual_falls(history: &[f64]) -> bool {
+    const { assert!(FALL_WINDOW == 3, "the pattern below reads three values") };
     match history {
         [.., before, _, last] => *last <= RESIDUAL_FALL * *before,
         _ => false,
@@ -56,9 +60,22 @@ pub(crate) fn residual_falls(history: &[f64]) -> bool {
 #[derive(Debug, Default)]
 pub(crate) struct OutputHistory {
     values: Vec<[f64; 4]>,
+    /// Values before the estimate may be made (0 for the default, five; 4 from a warm start).
+    needed: usize,
 }
 
 impl OutputHistory {
+    /// A history whose first entry is a warm start's outputs (central and minimum film,
+    /// sliding and rolling `mu-bar`): the start is a converged solution, so its outputs
+    /// belong to the sequence the estimate reads, and three cycles after it (one window of
+    /// four values) may end the solve.
+    pub fn from_start(outputs: [f64; 4]) -> Self {
+        OutputHistory {
+            values: vec![outputs],
+            needed: 4,
+        }
+    }
+
     /// Records the central film, minimum film, sliding and rolling `mu-bar` after a cycle
     /// (the rolling part 0 where it is not computed).
     pub fn push(&mut self, h_central: f64, h_min: f64, sliding: f64, rolling: f64) {
@@ -70,10 +87,16 @@ impl OutputHistory {
     /// before it turns); infinite until five cycles are recorded.
     pub fn relative_error(&self) -> f64 {
         let n = self.values.len();
-        if n < 5 {
+        // The default history needs five values (two windows).
+        let needed = if self.needed == 0 { 5 } else { self.needed };
+        if n < needed {
             return f64::INFINITY;
         }
-        window_error(&self.values[n - 4..]).max(window_error(&self.values[n - 5..n - 1]))
+        let last = window_error(&self.values[n - 4..]);
+        if n < 5 {
+            return last;
+        }
+        last.max(window_error(&self.values[n - 5..n - 1]))
     }
 }
 

@@ -1,0 +1,179 @@
+//! Continuation: a solve that starts from the converged solution of a related case, its base
+//! (the same contact at another slip or Eyring stress, or the Eyring twin of a limited
+//! case), instead of from the Hertzian pressure.
+//!
+//! At the small slips of the paper the pressure and the film hardly depend on the slip and
+//! the Eyring stress: over Figs. 4-6 the central film of the nine cases of a family spreads
+//! by 1e-4 (median; 7e-3 at most). So the finest level starts from the base's pressure and
+//! `Delta`, on the base's level (a base the film made refine takes its members there too);
+//! by cycles if the base converged by cycles, else by the Newton-Krylov finish directly.
+//! Where that fails the solve starts again from the Hertzian pressure
+//! ([`StartKind::Fallback`]).
+//!
+//! Two stopping details make the warm start pay: the start's own outputs are the first entry
+//! of the output history (a converged state is a point of the sequence the estimate reads,
+//! so three cycles can end the solve instead of five), and settled outputs are accepted
+//! while the residual is at most [`WARM_RESIDUAL_FACTOR`] times the base's accepted one even
+//! where it no longer falls (a warm start begins near its fixed point; without it the
+//! heaviest members, M 11 070, took a Newton-Krylov detour and were slower than cold).
+
+use super::{
+    converge_by_cycles, finish, friction, hierarchy, polish_and_finish, Converged, Hierarchy,
+    Params, StallWindows, State, Work, MAX_LEVEL,
+};
+use crate::physics::case::Problem;
+use crate::solver::grid::Grid;
+use crate::solver::output::{Method, Progress, StartKind};
+
+/// A converged solution that a related case starts from: its finest grid and level, the
+/// pressure there, the film constant, how it converged and the residual it was accepted at.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Start {
+    /// The grid of `p`.
+    pub grid: Grid,
+    /// The level of that grid.
+    pub level: u32,
+    /// Pressure `P` at the nodes.
+    pub p: Vec<f64>,
+    /// The film constant `Delta`.
+    pub delta: f64,
+    /// What converged it.
+    pub method: Method,
+    /// Its last residual.
+    pub residual: f64,
+}
+
+impl Start {
+    /// The start a solution gives.
+    pub fn of(s: &super::PointSolution) -> Self {
+        Start {
+            grid: s.grid,
+            level: s.info.level,
+            p: s.p.clone(),
+            delta: s.delta,
+            method: s.info.method,
+            residual: s.info.residual(),
+        }
+    }
+
+    /// Whether a solve with `params` can start from it: the same domain, on a level no
+    /// coarser than asked.
+    pub(super) fn fits(&self, params: &Params) -> bool {
+        self.level >= params.level
+            && self.level <= MAX_LEVEL
+            && Grid::level(&params.domain, self.level) == self.grid
+            && self.p.len() == self.grid.len()
+            && self.delta.is_finite()
+    }
+}
+
+/// The residual a warm solve's settled outputs are accepted at, as a multiple of the base's
+/// accepted residual (module documentation).
+const WARM_RESIDUAL_FACTOR: f64 = 2.0;
+
+/// What the warm cycles' stopping rule knows of the start.
+pub(super) struct WarmStop {
+    /// The start's central and minimum film, sliding and rolling `mu-bar`.
+    pub outputs: [f64; 4],
+    /// The base's accepted residual.
+    pub residual: f64,
+}
+
+impl WarmStop {
+    /// Whether settled outputs at `residual` end the cycles although the residual no longer
+    /// falls.
+    pub fn accepts(&self, residual: f64) -> bool {
+        residual <= WARM_RESIDUAL_FACTOR * self.residual
+    }
+}
+
+/// `params` on `level` (a base refined to a finer level than asked), with the refinements
+/// left to it.
+pub(super) fn params_at(params: &Params, level: u32) -> Params {
+    Params {
+        level,
+        coarsest_level: params.coarsest_level.min(level),
+        film_refinement_levels: params
+            .film_refinement_levels
+            .saturating_sub(level - params.level),
+        ..params.clone()
+    }
+}
+
+/// Converges `problem` on `start`'s level from it (module documentation); `None` where it
+/// fails, its residuals appended to `tried`.
+pub(super) fn converge(
+    problem: &Problem,
+    params: &Params,
+    start: &Start,
+    observe: &mut dyn FnMut(&Progress),
+    tried: &mut Vec<f64>,
+) -> Option<(Hierarchy, Converged)> {
+    let mut mg = hierarchy(problem, params, start.delta);
+    let top = mg.levels.len() - 1;
+    // The pressure first, then the edge: the far field is put on the boundary for the
+    // start's `Delta`.
+    mg.levels[top].p.copy_from_slice(&start.p);
+    mg.make_top(top);
+    let (start_residual, _) = mg.residual_norm(top);
+    let at_start = State::of(&mg, top);
+    let level = &mg.levels[top];
+    let film = friction::film(level, 1.0);
+    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
+    let stop = WarmStop {
+        outputs: [
+            film.h_central,
+            film.h_min,
+            mu.sliding,
+            mu.rolling.unwrap_or(0.0),
+        ],
+        residual: start.residual,
+    };
+    let mut history = Vec::new();
+    let mut work = Work::default();
+    let mut cycles = 0;
+    if start.method == Method::Cycles {
+        // No early-stall rule: a warm start's residual need not halve (as on a refined level).
+        let windows = StallWindows {
+            stall: params.stall_cycles,
+            early: 0,
+        };
+        let run = converge_by_cycles(&mut mg, top, params, windows, Some(&stop), observe);
+        cycles = run.history.len();
+        history.extend(&run.history);
+        if run.converged {
+            return Some((
+                mg,
+                Converged {
+                    cycles,
+                    history,
+                    method: Method::Cycles,
+                    work,
+                    start: StartKind::Warm,
+                },
+            ));
+        }
+        if run.non_finite.is_none() && run.best_residual < start_residual {
+            run.best.restore(&mut mg, top);
+        } else {
+            at_start.restore(&mut mg, top);
+        }
+    }
+    let converged = params.newton_steps > 0
+        && (work.add(&finish(&mut mg, top, params, observe, &mut history))
+            || polish_and_finish(&mut mg, top, params, observe, &mut history, &mut work));
+    if !converged {
+        tried.extend(history);
+        return None;
+    }
+    Some((
+        mg,
+        Converged {
+            cycles,
+            history,
+            method: Method::NewtonKrylov,
+            work,
+            start: StartKind::Warm,
+        },
+    ))
+}
