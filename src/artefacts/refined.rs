@@ -94,12 +94,12 @@ pub struct Refined {
 /// The coefficients of the level-7 fit (`repro mastercurve --level 7`, figures/mastercurve-fit.csv),
 /// used by `repro predict`; tests/refined.rs refits them.
 pub const REFINED: Refined = Refined {
-    coefficients: [1.003264e0, -7.634658e-2, 4.120603e-1, -3.872374e-1],
+    coefficients: [1.003263e0, -7.634000e-2, 4.121627e-1, -3.874257e-1],
 };
 
 /// Half-width of `repro predict`'s band, relative: the 95th percentile of the cross-validated
 /// relative residuals of the level-7 fit (figures/mastercurve-fit.csv; tests/refined.rs).
-pub const REFINED_BAND: f64 = 4.787419e-2;
+pub const REFINED_BAND: f64 = 4.784142e-2;
 
 impl Refined {
     /// `mu-bar_refined` of a contact.

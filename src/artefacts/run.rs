@@ -17,7 +17,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// What a solve yields, as cached.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -289,10 +289,6 @@ impl Job {
         }
     }
 
-    /// The bases below it, the nearest first.
-    fn bases(&self) -> impl Iterator<Item = &Job> {
-        std::iter::successors(self.base.as_deref(), |b| b.base.as_deref())
-    }
 }
 
 /// The job of a point case at `params` (the one rule's, [`Params::for_problem`], or a
@@ -395,12 +391,13 @@ pub fn missing_message(missing: &[(String, &Job, Option<String>)], cache: &Cache
 /// `progress` of every finished job. Offline, every job must have an entry, or the error
 /// lists those without one (`target` names them).
 ///
-/// In two phases: first the bases that the jobs missing from the cache start from (largest
-/// first, a layer of the chains of bases at a time: the Eyring twin of a limited case before
-/// the case, its own base before the twin), each solved whether or not its own entry is
-/// cached, for its solution is what its members start from, and kept in memory; then the
-/// jobs, each from its base's solution ([`point::solve_from`]). A base solves to the same
-/// bits whoever solves it, so a job's result depends on its case and key alone.
+/// The jobs missing from the cache are solved with the bases they start from, as trees: a
+/// base first (cold, or from a solution this process kept), then its members from its
+/// solution ([`point::solve_from`]), in parallel, the heaviest trees first (the Eyring twin
+/// of a limited case is a member of its family's base and the base of the limited case). A
+/// base is solved whether or not its own entry is cached, for its solution is what its
+/// members start from; it solves to the same bits whoever solves it, so a job's result
+/// depends on its case and key alone.
 pub fn run_jobs(
     target: &str,
     jobs: &[Job],
@@ -449,130 +446,142 @@ pub fn run_jobs(
             })
             .collect();
     }
-    // The solutions kept in memory (those of this process's earlier runs), then the bases
-    // the missing jobs need and lack, by key, with their depth in the chain (0 for a base
-    // solved cold or from a kept solution).
+    // The solves: the missing jobs and the bases they need, each once, as a forest whose
+    // roots start cold or from a solution kept in memory (this process's earlier runs).
     let kept = |key: &str| store.cache().and_then(|c| c.start(key));
-    let mut starts: HashMap<&str, Arc<Start>> = HashMap::new();
-    let mut bases: BTreeMap<&str, &Job> = BTreeMap::new();
+    let mut nodes: BTreeMap<&str, &Job> = BTreeMap::new();
+    let mut roots: BTreeMap<&str, Option<Arc<Start>>> = BTreeMap::new();
+    let mut children: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
     for (job, d) in jobs.iter().zip(&looked) {
-        if d.is_some() {
+        if d.is_some() || nodes.contains_key(job.key.as_str()) {
             continue;
         }
-        for b in job.bases() {
-            if starts.contains_key(b.key.as_str()) || bases.contains_key(b.key.as_str()) {
+        let mut node = job;
+        loop {
+            nodes.insert(node.key.as_str(), node);
+            let Some(base) = node.base.as_deref() else {
+                roots.insert(node.key.as_str(), None);
+                break;
+            };
+            if let Some(k) = kept(&base.key) {
+                roots.insert(node.key.as_str(), Some(k));
                 break;
             }
-            match kept(&b.key) {
-                Some(k) => {
-                    starts.insert(b.key.as_str(), k);
-                    break;
-                }
-                None => {
-                    bases.insert(b.key.as_str(), b);
-                }
+            children
+                .entry(base.key.as_str())
+                .or_default()
+                .push(node.key.as_str());
+            if nodes.contains_key(base.key.as_str()) {
+                break;
             }
+            node = base;
         }
     }
-    let depth_of = |mut b: &Job| {
-        let mut depth = 0;
-        while let Some(below) = b.base.as_deref() {
-            if !bases.contains_key(below.key.as_str()) {
-                break;
-            }
-            depth += 1;
-            b = below;
-        }
-        depth
+    let cached = looked.iter().filter(|d| d.is_some()).count();
+    let own: std::collections::BTreeSet<&str> = jobs
+        .iter()
+        .zip(&looked)
+        .filter(|(_, d)| d.is_none())
+        .map(|(j, _)| j.key.as_str())
+        .collect();
+    let bases = nodes.keys().filter(|k| !own.contains(*k)).count();
+    let forest = Forest {
+        nodes: &nodes,
+        children: &children,
+        store,
+        warn,
+        progress,
+        results: Mutex::new(HashMap::new()),
+        done: AtomicUsize::new(cached),
+        total: nodes.len() + cached,
+        cached,
+        bases,
     };
-    let layers: Vec<(usize, &Job)> = bases.values().map(|b| (depth_of(b), *b)).collect();
-    let solve_one = |job: &Job, start: Option<&Start>| {
+    // The heaviest trees first, so that the last solves of a run are light ones.
+    let mut order: Vec<(&str, Option<Arc<Start>>, f64)> = roots
+        .into_iter()
+        .map(|(k, s)| (k, s, forest.weight(k)))
+        .collect();
+    order.sort_by(|a, b| b.2.total_cmp(&a.2));
+    order
+        .into_par_iter()
+        .for_each(|(key, start, _)| forest.run(key, start));
+    let solved = forest.results.into_inner().unwrap_or_else(|e| e.into_inner());
+    Ok(jobs
+        .iter()
+        .zip(looked)
+        .map(|(job, d)| {
+            d.or_else(|| solved.get(job.key.as_str()).cloned())
+                .expect("every missing job is a node of the forest, solved above")
+        })
+        .collect())
+}
+
+/// The solves of a run as trees: each node a job, solved from its parent's solution (its
+/// base), its children after it, in parallel (rayon's work stealing spreads a family's
+/// members over the cores as soon as its base is done).
+struct Forest<'a, 'j> {
+    nodes: &'a BTreeMap<&'j str, &'j Job>,
+    children: &'a BTreeMap<&'j str, Vec<&'j str>>,
+    store: Store<'a>,
+    warn: &'a (dyn Fn(String) + Sync),
+    progress: &'a (dyn Fn(RunProgress) + Sync),
+    results: Mutex<HashMap<&'j str, Done>>,
+    done: AtomicUsize,
+    total: usize,
+    cached: usize,
+    bases: usize,
+}
+
+impl<'j> Forest<'_, 'j> {
+    /// The expected cost of the tree under `key`.
+    fn weight(&self, key: &str) -> f64 {
+        let own = self.nodes.get(key).map_or(0.0, |j| weight(j));
+        own + self
+            .children
+            .get(key)
+            .map_or(0.0, |c| c.iter().map(|k| self.weight(k)).sum())
+    }
+
+    /// Solves `key` from `start`, then its children from its solution (cold where it
+    /// failed).
+    fn run(&self, key: &'j str, start: Option<Arc<Start>>) {
+        let job = self.nodes[key];
         let clock = std::time::Instant::now();
-        let (outcome, start) = job.work.solve(start, true);
+        let (outcome, solution) = job.work.solve(start.as_deref(), true);
         let stamp = Stamp::now(clock.elapsed().as_secs_f64());
-        let start = start.map(Arc::new);
-        if let Some(c) = store.cache() {
+        let solution = solution.map(Arc::new);
+        if let Some(c) = self.store.cache() {
             if let Err(e) = c.put(&job.key, &outcome, &stamp) {
-                warn(format!(
+                (self.warn)(format!(
                     "cannot write cache entry in {}: {e}",
                     c.dir().display()
                 ));
             }
-            if let Some(s) = &start {
+            if let Some(s) = &solution {
                 c.keep_start(&job.key, s.clone());
             }
         }
-        (
-            Done {
-                outcome,
-                stamp: Some(stamp),
-                cached: false,
-            },
-            start,
-        )
-    };
-    let mut solved: HashMap<&str, Done> = HashMap::new();
-    let base_total = bases.len();
-    let bases_done = AtomicUsize::new(0);
-    let depth = layers.iter().map(|(d, _)| d + 1).max().unwrap_or(0);
-    for layer in 0..depth {
-        let mut this: Vec<&Job> = layers
-            .iter()
-            .filter(|(d, _)| *d == layer)
-            .map(|(_, j)| *j)
-            .collect();
-        this.sort_by(|a, b| weight(b).total_cmp(&weight(a)));
-        let results: Vec<(&str, Done, Option<Arc<Start>>)> = this
-            .par_iter()
-            .map(|b| {
-                let start = b.base.as_ref().and_then(|bb| starts.get(bb.key.as_str()));
-                let (done, kept) = solve_one(b, start.map(|s| s.as_ref()));
-                progress(RunProgress {
-                    done: bases_done.fetch_add(1, Ordering::Relaxed) + 1,
-                    total: base_total,
-                    cached: 0,
-                    phase: Phase::Bases,
-                });
-                (b.key.as_str(), done, kept)
-            })
-            .collect();
-        for (key, done, kept) in results {
-            if let Some(k) = kept {
-                starts.insert(key, k);
-            }
-            solved.insert(key, done);
+        let done = Done {
+            outcome,
+            stamp: Some(stamp),
+            cached: false,
+        };
+        self.results
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .insert(key, done);
+        (self.progress)(RunProgress {
+            done: self.done.fetch_add(1, Ordering::Relaxed) + 1,
+            total: self.total,
+            cached: self.cached,
+            bases: self.bases,
+        });
+        if let Some(kids) = self.children.get(key) {
+            kids.par_iter()
+                .for_each(|k| self.run(k, solution.clone()));
         }
     }
-    let done = AtomicUsize::new(0);
-    let cached_count = AtomicUsize::new(0);
-    let total = jobs.len();
-    let runs = jobs
-        .par_iter()
-        .zip(looked)
-        .map(|(job, looked)| {
-            let run = match (looked, solved.get(job.key.as_str())) {
-                (Some(d), _) => d,
-                (None, Some(d)) => d.clone(),
-                (None, None) => {
-                    let start = job.base.as_ref().and_then(|b| starts.get(b.key.as_str()));
-                    solve_one(job, start.map(|s| s.as_ref())).0
-                }
-            };
-            let cached_now = if run.cached {
-                cached_count.fetch_add(1, Ordering::Relaxed) + 1
-            } else {
-                cached_count.load(Ordering::Relaxed)
-            };
-            progress(RunProgress {
-                done: done.fetch_add(1, Ordering::Relaxed) + 1,
-                total,
-                cached: cached_now,
-                phase: Phase::Cases,
-            });
-            run
-        })
-        .collect::<Vec<_>>();
-    Ok(runs)
 }
 
 /// A job's expected cost, for ordering the bases largest first: the heavier the load and
@@ -675,26 +684,17 @@ pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<(Job, Problem)>, Str
         .collect()
 }
 
-/// Progress of a run, reported after each case.
+/// Progress of a run, reported after each solve.
 #[derive(Debug, Clone, Copy)]
 pub struct RunProgress {
-    /// Cases done (of the phase).
+    /// Cases done: taken from the cache, or solved.
     pub done: usize,
-    /// Cases in all (of the phase).
+    /// Cases in all: those of the run and the bases they start from.
     pub total: usize,
-    /// Of those done, taken from the cache.
+    /// Of them, taken from the cache (counted as done from the start).
     pub cached: usize,
-    /// Which phase of the run ([`run_jobs`]).
-    pub phase: Phase,
-}
-
-/// The phases of a run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Phase {
-    /// The bases the missing cases start from.
-    Bases,
-    /// The cases themselves.
-    Cases,
+    /// Of them, bases solved for the run's cases, beyond its own ([`run_jobs`]).
+    pub bases: usize,
 }
 
 /// Runs `cases` at `level` (see [`point_jobs`]) through `store` (see [`run_jobs`]); `target`

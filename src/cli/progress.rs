@@ -7,7 +7,7 @@ use super::args::TargetArgs;
 use super::config::context;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
-use repro::artefacts::run::{Phase, RunProgress};
+use repro::artefacts::run::RunProgress;
 use repro::artefacts::target::Context;
 use std::io::IsTerminal;
 use std::sync::Mutex;
@@ -72,23 +72,14 @@ impl Progress {
 
     /// Hears of a finished case of target `name` (from any thread).
     pub fn case_done(&self, name: &str, p: RunProgress) {
-        // The bases a run starts from are a phase of their own, with a bar of their own.
-        let phase_name;
-        let name = match p.phase {
-            Phase::Bases => {
-                phase_name = format!("{name} bases");
-                phase_name.as_str()
-            }
-            Phase::Cases => name,
-        };
         match self.mode {
             Mode::Quiet => {}
             Mode::Lines => {
                 let step = (p.total / 10).max(1);
                 if p.done.is_multiple_of(step) || p.done == p.total {
                     eprintln!(
-                        "  {name}: {}/{} cases ({} cached)",
-                        p.done, p.total, p.cached
+                        "  {name}: {}/{} cases ({} cached, {} bases)",
+                        p.done, p.total, p.cached, p.bases
                     );
                 }
             }
@@ -102,7 +93,7 @@ impl Progress {
                 }
                 if let Some((_, bar)) = slot.as_ref() {
                     bar.set_position(p.done as u64);
-                    bar.set_message(format!("{} cached", p.cached));
+                    bar.set_message(format!("{} cached, {} bases", p.cached, p.bases));
                     if p.done == p.total {
                         close(bar);
                     }
