@@ -23,7 +23,7 @@
 
 use super::jacobian::{wedge_weights, Jacobian};
 use super::level::{Level, Model, LOAD};
-use crate::solver::bordered_lu::LuStorage;
+use crate::solver::bordered_lu::{BorderedLu, LuStorage};
 use crate::solver::{gmres, line_search};
 
 /// `|dL/dP|` at every interior node: the Poiseuille stencil and the wedge term's own kernel
@@ -147,8 +147,10 @@ pub(crate) fn iterate(
     let mut eta = FIRST_FORCING;
     let mut norm_before = f64::NAN;
     let mut stalled = 0;
-    // The factorisation's arrays, kept from one step to the next.
+    // The factorisation's arrays, kept from one step to the next; and the last step's
+    // factor itself, with the active set it was made for (see [`LAG_ITERATIONS`]).
     let mut storage = LuStorage::default();
+    let mut kept: Option<(Vec<usize>, Vec<bool>, BorderedLu)> = None;
     let mut outcome = Outcome {
         converged: false,
         iterations: 0,
@@ -171,27 +173,66 @@ pub(crate) fn iterate(
             .map(|&k| level.p[k] > 0.0 && ev.phi[k] == level.p[k])
             .collect();
         let mut jac = Jacobian::new(level, model, active, cavitating, scale.clone());
-        let Some(mut preconditioner) =
-            jac.preconditioner(level, limits.box_radius, true, std::mem::take(&mut storage))
-        else {
-            return outcome;
+        // The last step's factor where the active set has not changed (a warm start near
+        // its solution), else a new one.
+        let lagged = match kept.take() {
+            Some((a, c, lu)) if a == jac.active && c == jac.cavitating => Some(lu),
+            Some((_, _, lu)) => {
+                storage = lu.into_storage();
+                None
+            }
+            None => None,
+        };
+        let is_lagged = lagged.is_some();
+        let mut preconditioner = match lagged {
+            Some(lu) => lu,
+            None => match jac.preconditioner(
+                level,
+                limits.box_radius,
+                true,
+                std::mem::take(&mut storage),
+            ) {
+                Some(lu) => lu,
+                None => return outcome,
+            },
         };
         let n = jac.len();
         let mut rhs: Vec<f64> = jac.active.iter().map(|&k| -ev.phi[k]).collect();
         rhs.push(-ev.load);
         let mut step = vec![0.0; n];
-        let krylov = gmres::solve(
+        let gmres_params = gmres::Params {
+            restart: limits.krylov_restart,
+            max_iterations: limits.krylov_iterations,
+            tolerance: eta,
+        };
+        let mut krylov = gmres::solve(
             &rhs,
             &mut step,
-            &gmres::Params {
-                restart: limits.krylov_restart,
-                max_iterations: limits.krylov_iterations,
-                tolerance: eta,
-            },
+            &gmres_params,
             |v, out| jac.apply(level, v, out),
             |v, out| preconditioner.solve(v, out),
         );
-        storage = preconditioner.into_storage();
+        if is_lagged && (krylov.iterations > LAG_ITERATIONS || !(krylov.relative_residual <= eta)) {
+            // The lagged factor no longer preconditions this Jacobian: a new one, and the
+            // system solved again.
+            outcome.krylov_iterations += krylov.iterations;
+            preconditioner = match jac.preconditioner(
+                level,
+                limits.box_radius,
+                true,
+                preconditioner.into_storage(),
+            ) {
+                Some(lu) => lu,
+                None => return outcome,
+            };
+            krylov = gmres::solve(
+                &rhs,
+                &mut step,
+                &gmres_params,
+                |v, out| jac.apply(level, v, out),
+                |v, out| preconditioner.solve(v, out),
+            );
+        }
         outcome.iterations = it;
         outcome.krylov_iterations += krylov.iterations;
         if !step.iter().all(|v| v.is_finite()) {
@@ -200,6 +241,7 @@ pub(crate) fn iterate(
         // Backtracking on |phi|: halve the step until it decreases (or the smallest damping).
         let p_old = level.p.clone();
         let h0_old = *h0;
+        kept = Some((jac.active.clone(), jac.cavitating.clone(), preconditioner));
         let (column, cavitating) = (&jac.column, &jac.cavitating);
         let omega = line_search::backtrack(ev.norm, |omega| {
             for (k, &c) in column.iter().enumerate() {
@@ -261,6 +303,16 @@ const STALLED_STEPS: usize = 3;
 
 /// The forcing term of the first step: its linear system solved to a tenth.
 const FIRST_FORCING: f64 = 0.1;
+
+/// GMRES iterations above which a step's lagged factor (the last step's, kept where the
+/// active set has not changed) gives way to a new one, the system solved again. A fresh
+/// factor takes 1-16 iterations on the hard cases; a factorisation costs what 30-100
+/// iterations do at level 7 (0.15-0.4 s against 4-5 ms per Jacobian-vector product), so a
+/// factor that still preconditions within 20 saves the factorisation, and one that does not
+/// costs those 20 products at most. Far from the solution the Jacobian changes too fast for
+/// a lagged factor (a kept factorisation failed on the cold solves before); near it, as a
+/// warm start is, it changes little.
+const LAG_ITERATIONS: usize = 20;
 
 #[cfg(test)]
 mod tests {
