@@ -306,7 +306,7 @@ impl ShearLaw {
 /// (error `1 / (4 x^2)`); the standard function below 0.5 and for anything not positive.
 #[inline]
 pub fn eyring_stress(x: f64) -> f64 {
-    if !(x >= 0.5) {
+    if x.is_nan() || x < 0.5 {
         x.asinh()
     } else if x < 1e8 {
         (x + x.mul_add(x, 1.0).sqrt()).ln()

@@ -212,7 +212,11 @@ pub(crate) fn iterate(
             |v, out| jac.apply(level, v, out),
             |v, out| preconditioner.solve(v, out),
         );
-        if is_lagged && (krylov.iterations > LAG_ITERATIONS || !(krylov.relative_residual <= eta)) {
+        if is_lagged
+            && (krylov.iterations > LAG_ITERATIONS
+                || krylov.relative_residual.is_nan()
+                || krylov.relative_residual > eta)
+        {
             // The lagged factor no longer preconditions this Jacobian: a new one, and the
             // system solved again.
             outcome.krylov_iterations += krylov.iterations;
