@@ -288,7 +288,6 @@ impl Job {
             None => &self.key,
         }
     }
-
 }
 
 /// The job of a point case at `params` (the one rule's, [`Params::for_problem`], or a
@@ -506,7 +505,10 @@ pub fn run_jobs(
     order
         .into_par_iter()
         .for_each(|(key, start, _)| forest.run(key, start));
-    let solved = forest.results.into_inner().unwrap_or_else(|e| e.into_inner());
+    let solved = forest
+        .results
+        .into_inner()
+        .unwrap_or_else(|e| e.into_inner());
     Ok(jobs
         .iter()
         .zip(looked)
@@ -578,8 +580,7 @@ impl<'j> Forest<'_, 'j> {
             bases: self.bases,
         });
         if let Some(kids) = self.children.get(key) {
-            kids.par_iter()
-                .for_each(|k| self.run(k, solution.clone()));
+            kids.par_iter().for_each(|k| self.run(k, solution.clone()));
         }
     }
 }
@@ -641,6 +642,16 @@ pub fn describe(case: &Case, level: u32) -> String {
                     "alpha {} 1/GPa, eta0 {} mPa s",
                     g(alpha_per_pa * 1e9),
                     g(eta0_pa_s * 1e3)
+                ),
+                LubricantSpec::Datasheet {
+                    datasheet,
+                    temperature_c,
+                    alpha_per_gpa,
+                } => format!(
+                    "{} at {} C{}",
+                    datasheet.label(),
+                    g(*temperature_c),
+                    alpha_per_gpa.map_or_else(String::new, |a| format!(", alpha {} 1/GPa", g(a)))
                 ),
             };
             format!(

@@ -127,6 +127,43 @@ pub enum DatasheetError {
     PressureViscosity(#[from] PressureViscosityError),
 }
 
+impl DatasheetError {
+    /// The case-file key the error is about (a key of [`Datasheet`], `temperature_c` or
+    /// `alpha_per_gpa`), so that a command line can name its flag and a study its field.
+    pub fn field(&self) -> &'static str {
+        match self {
+            DatasheetError::Missing { field, .. } => field,
+            DatasheetError::Conflicting { other, .. } => other,
+            DatasheetError::UnknownIsoVg { .. } => "iso_vg",
+            DatasheetError::NotPositive { field, .. } => field,
+            DatasheetError::Rho15OutsideTable54D { .. } => "rho15_kg_m3",
+            DatasheetError::TemperatureOutOfRange { .. } => "temperature_c",
+            DatasheetError::Walther(e) => match e {
+                // The line is built through (40 C, nu40) and (100 C, nu100).
+                WaltherError::NotPositive { field, .. }
+                | WaltherError::ViscosityBelowRange { field, .. } => match *field {
+                    "nu1_mm2_s" => "nu40_mm2_s",
+                    "nu2_mm2_s" => "nu100_mm2_s",
+                    // A predicted viscosity below the line's floor: the temperature is too
+                    // high for this oil.
+                    _ => "temperature_c",
+                },
+                WaltherError::TemperatureOutOfRange { .. } => "temperature_c",
+                WaltherError::NotFalling { .. } => "nu100_mm2_s",
+            },
+            DatasheetError::ViscosityIndex(e) => match e {
+                ViscosityIndexError::NotPositive { field, .. } => field,
+                ViscosityIndexError::Nu100NotBelowNu40 { .. }
+                | ViscosityIndexError::Nu100BelowD2270 { .. } => "nu100_mm2_s",
+                ViscosityIndexError::ViscosityIndexOutOfRange { .. } => "viscosity_index",
+            },
+            // Unreachable from a datasheet (eta = nu rho > 0); the viscosity at the
+            // temperature is what it was computed from.
+            DatasheetError::PressureViscosity(_) => "temperature_c",
+        }
+    }
+}
+
 /// An ISO 3448 viscosity grade.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IsoVg {
@@ -265,6 +302,28 @@ pub struct Datasheet {
 }
 
 impl Datasheet {
+    /// A short description for tables and listings (no commas, so a CSV cell needs no
+    /// quotes), e.g. `ISO VG 68 VI 97 mineral`.
+    pub fn label(&self) -> String {
+        let g = |x: f64| format!("{:.4e}", x).parse::<f64>().unwrap_or(x);
+        let nu40 = match (self.iso_vg, self.nu40_mm2_s) {
+            (Some(vg), _) => format!("ISO VG {vg}"),
+            (None, Some(nu)) => format!("nu40 {} mm^2/s", g(nu)),
+            (None, None) => "nu40 ?".into(),
+        };
+        let nu100 = match (self.viscosity_index, self.nu100_mm2_s) {
+            (Some(vi), _) => format!("VI {}", g(vi)),
+            (None, Some(nu)) => format!("nu100 {} mm^2/s", g(nu)),
+            (None, None) => "nu100 ?".into(),
+        };
+        let oil = match self.base_oil {
+            BaseOil::Mineral => "mineral",
+            BaseOil::Polyalphaolefin => "PAO",
+            BaseOil::Polyglycol => "PAG",
+        };
+        format!("{nu40} {nu100} {oil}")
+    }
+
     /// Checks the datasheet and derives the lubricant's laws.
     pub fn resolve(&self) -> Result<DatasheetLubricant, DatasheetError> {
         let nu40_mm2_s = match (self.nu40_mm2_s, self.iso_vg) {
@@ -388,6 +447,58 @@ impl DatasheetLubricant {
         Ok(LubricantState {
             alpha_per_pa: self.alpha(temperature_c)?.alpha_per_pa,
             eta0_pa_s: self.eta_pa_s(temperature_c)?,
+        })
+    }
+}
+
+/// A datasheet lubricant at one temperature: the state the solver takes (`alpha`, `eta0`) and
+/// what a report shows beside it (the viscosity and density it came from, and the
+/// correlation's estimate of `alpha` with its band when the user gave none).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DatasheetState {
+    /// Temperature, C.
+    pub temperature_c: f64,
+    /// Kinematic viscosity at the temperature (ASTM D341), mm^2/s.
+    pub nu_mm2_s: f64,
+    /// Density at the temperature (ASTM D1250), kg/m^3.
+    pub rho_kg_m3: f64,
+    /// `alpha` (given, or the correlation's central value) and `eta0 = nu rho`.
+    pub state: LubricantState,
+    /// The correlation's estimate and band; `None` when `alpha` was given.
+    pub correlated: Option<PressureViscosityEstimate>,
+}
+
+impl DatasheetLubricant {
+    /// The lubricant at `temperature_c`: `eta0 = nu rho` (D341, D1250) and `alpha`, the
+    /// user's `alpha_per_gpa` when given (it replaces the correlation), else AGMA 925's.
+    pub fn at(
+        &self,
+        temperature_c: f64,
+        alpha_per_gpa: Option<f64>,
+    ) -> Result<DatasheetState, DatasheetError> {
+        let nu_mm2_s = self.nu_mm2_s(temperature_c)?;
+        let rho_kg_m3 = self.rho_kg_m3(temperature_c)?;
+        // The same product as [`DatasheetLubricant::eta_pa_s`], so both give the same bits.
+        let eta0_pa_s = nu_mm2_s * 1e-6 * rho_kg_m3;
+        let (alpha_per_pa, correlated) = match alpha_per_gpa {
+            Some(a) => {
+                check_positive("alpha_per_gpa", a)?;
+                (a * 1e-9, None)
+            }
+            None => {
+                let e = alpha_agma925(self.base_oil, eta0_pa_s)?;
+                (e.alpha_per_pa, Some(e))
+            }
+        };
+        Ok(DatasheetState {
+            temperature_c,
+            nu_mm2_s,
+            rho_kg_m3,
+            state: LubricantState {
+                alpha_per_pa,
+                eta0_pa_s,
+            },
+            correlated,
         })
     }
 }
