@@ -3,9 +3,10 @@
 //! (`point::Params::for_problem`, with its automatic refinement of a closed film), one
 //! markdown row per case.
 //!
-//! `cargo run --release --example random_battery -- [COUNT] [SEED] [LEVEL] [THREADS]`
+//! `cargo run --release --example random_battery -- [COUNT] [SEED] [LEVEL] [THREADS] [light]`
 //! (default 40 cases, seed 29, level 7, 2 threads). The draws: `p_H` 0.3-4 GPa, `u_m`
-//! 0.3-30 m/s, `eta0` 2 mPa s-1 Pa s, slip 3e-4-3e-2 and `tau0` 2-20 MPa log-uniform;
+//! 0.3-30 m/s, `eta0` 2 mPa s-1 Pa s, slip 3e-4-3e-2 and `tau0` 2-20 MPa log-uniform
+//! (`light`: the light, viscous corner, `p_H` 0.3-0.6 GPa, `u_m` 3-30 m/s, `eta0` 0.1-1 Pa s);
 //! `alpha` 8-40 /GPa and `D = Rx/Ry` 0.1-1 uniform; `Rx` 10.4 mm, `E'` 226 GPa; Roelands,
 //! Dowson-Higginson, Eyring (the physics of Figs. 4-7).
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec as CaseSpec};
@@ -33,12 +34,17 @@ impl SplitMix {
     }
 }
 
-fn draw(rng: &mut SplitMix) -> PhysicalCase {
+fn draw(rng: &mut SplitMix, light: bool) -> PhysicalCase {
     let rx_m = 1.03875e-2;
-    let ph_pa = rng.log_uniform(0.3e9, 4e9);
-    let um_m_s = rng.log_uniform(0.3, 30.0);
+    let (ph, um, eta0) = if light {
+        ((0.3e9, 0.6e9), (3.0, 30.0), (0.1, 1.0))
+    } else {
+        ((0.3e9, 4e9), (0.3, 30.0), (2e-3, 1.0))
+    };
+    let ph_pa = rng.log_uniform(ph.0, ph.1);
+    let um_m_s = rng.log_uniform(um.0, um.1);
     let alpha_per_pa = rng.uniform(8e-9, 40e-9);
-    let eta0_pa_s = rng.log_uniform(2e-3, 1.0);
+    let eta0_pa_s = rng.log_uniform(eta0.0, eta0.1);
     let d = rng.uniform(0.1, 1.0);
     let slip = rng.log_uniform(3e-4, 3e-2);
     let tau0_pa = rng.log_uniform(2e6, 2e7);
@@ -126,8 +132,9 @@ fn main() {
         arg(3, 7) as u32,
         arg(4, 2) as usize,
     );
+    let light = a.get(5).is_some_and(|v| v == "light");
     let mut rng = SplitMix(seed);
-    let cases: Vec<PhysicalCase> = (0..count).map(|_| draw(&mut rng)).collect();
+    let cases: Vec<PhysicalCase> = (0..count).map(|_| draw(&mut rng, light)).collect();
     println!(
         "| # | p_H GPa | u_m m/s | eta0 Pa s | alpha /GPa | M | L | lambda | S | tau0 MPa | Rx/Ry | log10 tau_c | level | method | Hc Moes | Hmin Moes | mu-bar sliding | residual | s |"
     );

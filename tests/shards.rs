@@ -158,8 +158,13 @@ fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
     // Merging a shard again adds nothing.
     let (code, out, _) = repro(&["cache", "merge", s(&shards[0]), "--into", s(&merged)]);
     assert_eq!(code, 0);
-    // (Its five solves and the bases of its three point contacts.)
-    assert!(out.contains("0 copied, 8 already there"), "{out}");
+    // (Its five solves and the bases of its point contacts: how many of those it has depends
+    // on which families fall to it.)
+    let entries = keys(&shards[0]).len();
+    assert!(
+        out.contains(&format!("0 copied, {entries} already there")),
+        "{out}"
+    );
 
     // A different result under a key the merged cache has: refused, named, exit 1.
     let key = keys(&shards[0])[0].clone();

@@ -9,7 +9,7 @@ use crate::physics::thermal::flash::Flash;
 use crate::physics::thermal::strip::{solve_strip, Setting, Strip};
 use crate::physics::thermal::{Closure, ThermalContact, ThermalError, ThermalInputs};
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::point::PointSolution;
+use crate::solver::point::{FrictionRegion, PointSolution, LOAD, LOADED_FILM_FACTOR};
 use serde::{Deserialize, Serialize};
 
 /// The isothermal solvers' cap on `ln eta_bar` (`solver::point::level`): the Couette argument
@@ -65,6 +65,9 @@ pub struct Fields<'a> {
     pub h: &'a [f64],
     /// Central film `H`.
     pub h_central: f64,
+    /// Where the friction is integrated: the isothermal friction's region, so that the
+    /// correction compares like with like.
+    pub region: FrictionRegion,
 }
 
 impl<'a> Fields<'a> {
@@ -75,6 +78,7 @@ impl<'a> Fields<'a> {
             p: &solution.p,
             h: &solution.h,
             h_central: solution.film.h_central,
+            region: solution.friction_region,
         }
     }
 }
@@ -110,6 +114,7 @@ pub fn flat_film_thermal(
         p: &p,
         h: &h,
         h_central: h_c,
+        region: FrictionRegion::Domain,
     };
     let isothermal = fields_thermal(
         &fields,
@@ -141,6 +146,12 @@ pub fn fields_thermal(
     let f2 = Flash::of_surface(2, &inputs.solid, contact.u2_m_s, dx, nodes)?;
     let n_s = problem.eyring_n_s();
     let shear = problem.shear;
+    // The isothermal friction's region ([`FrictionRegion`]): the heat and the stress of the
+    // loaded film, over the applied load, or of every pressurised node, over theirs.
+    let h_limit = match solution.region {
+        FrictionRegion::Domain => f64::INFINITY,
+        FrictionRegion::LoadedFilm => LOADED_FILM_FACTOR * solution.h_central,
+    };
     let pass = |closure: Closure| -> Result<Pass, ThermalError> {
         let setting = Setting {
             flash: (&f1, &f2),
@@ -156,7 +167,7 @@ pub fn fields_thermal(
             let p = &solution.p[row.clone()];
             let h = &solution.h[row];
             let loaded: Vec<bool> = (0..nodes)
-                .map(|i| (1..g.nx).contains(&i) && p[i] > 0.0)
+                .map(|i| (1..g.nx).contains(&i) && p[i] > 0.0 && h[i] <= h_limit)
                 .collect();
             let h_m: Vec<f64> = h.iter().map(|&h| h * contact.film_scale_m).collect();
             let x_iso: Vec<f64> = (0..nodes)
@@ -187,6 +198,10 @@ pub fn fields_thermal(
                 dt_flash_max = dt_flash_max.max(n.t1).max(n.t2);
             }
         }
+        let load = match solution.region {
+            FrictionRegion::Domain => load,
+            FrictionRegion::LoadedFilm => LOAD / (g.hx * g.hy),
+        };
         Ok(Pass {
             mu_bar: sliding / load,
             dt_film_max,

@@ -61,7 +61,16 @@ impl Flash {
 
     /// The rise at node `i` due to the flux upstream of it, `q[0..i]` (K).
     pub fn upstream(&self, q: &[f64], i: usize) -> f64 {
-        let sum: f64 = (1..=i).map(|k| self.weights[k] * q[i - k]).sum();
+        self.upstream_from(q, i, 0)
+    }
+
+    /// [`Flash::upstream`] where `q` is zero before node `first`: the same sum, in the same
+    /// order, without its zero terms (the same bits; a strip whose heat starts at the
+    /// contact's inlet skips the nodes before it).
+    pub fn upstream_from(&self, q: &[f64], i: usize, first: usize) -> f64 {
+        let sum: f64 = (1..=i.saturating_sub(first))
+            .map(|k| self.weights[k] * q[i - k])
+            .sum();
         self.scale * sum
     }
 

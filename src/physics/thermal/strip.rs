@@ -71,8 +71,13 @@ pub fn solve_strip(
         stress: vec![0.0; n],
         nodes: Vec::with_capacity(n),
     };
+    // No heat before the first loaded node: the flash sums start there.
+    let first = strip.loaded.iter().position(|&l| l).unwrap_or(n);
     for i in 0..n {
-        let upstream = (f1.upstream(&q1, i), f2.upstream(&q2, i));
+        let upstream = (
+            f1.upstream_from(&q1, i, first),
+            f2.upstream_from(&q2, i, first),
+        );
         if !strip.loaded[i] {
             out.nodes.push(film_node(
                 setting.closure,

@@ -31,7 +31,9 @@ use crate::solver::output::{
 };
 use far_field::FarField;
 pub use friction::{FrictionRegion, LOADED_FILM_FACTOR};
-use level::{Model, LOAD};
+use level::Model;
+/// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
+pub(crate) use level::LOAD;
 use multigrid::Hierarchy;
 use std::time::Instant;
 pub use warm::Start;
@@ -254,6 +256,8 @@ pub struct PointSolution {
     pub film: Film,
     /// Reduced friction.
     pub friction: Friction,
+    /// The region the friction was integrated over ([`Params::friction_region`]).
+    pub friction_region: FrictionRegion,
     /// Convergence information.
     pub info: Info,
 }
@@ -1092,6 +1096,7 @@ fn solve_with(
         delta: mg.h0,
         film,
         friction,
+        friction_region: params.friction_region,
         info: Info {
             level: level_number(fine),
             method,
