@@ -20,8 +20,9 @@ pub struct Cli {
 pub enum Command {
     /// Solve one elliptical contact and print film thickness and reduced friction.
     ///
-    /// Either in Moes groups (--m, --l, --s-bar; Barus, incompressible, Eyring by default) or
-    /// physically (--lubricant or --alpha/--eta0, --ph, --um, --slip, --tau0; Roelands,
+    /// Either in Moes groups (--m, --l, --s-bar, with --eta0 and --ph where Roelands or
+    /// Dowson-Higginson need them; Barus, incompressible, Eyring by default) or physically
+    /// (--lubricant or --alpha/--eta0 or a datasheet, --ph, --um, --slip, --tau0; Roelands,
     /// Dowson-Higginson, Eyring by default, the physics of Figs. 4-6).
     Solve(Box<SolveArgs>),
     /// Table 4: grid convergence of the Appendix case at levels 5-8, beside the paper's values.
@@ -59,6 +60,12 @@ pub enum Command {
     Lss(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
+    ///
+    /// The lubricant is one of Table 1 (--lubricant, --temperature), given (--alpha, --eta0),
+    /// or a datasheet (--iso-vg or --nu40, --vi or --nu100, --rho15, --base-oil) at any
+    /// --temperature: eta0 = nu rho by ASTM D341 and D1250, alpha from AGMA 925 unless
+    /// --alpha is given. A correlated alpha is said so, with its band, and every output it
+    /// moves is printed with its range over that band.
     Predict(Box<PredictArgs>),
     /// Every target, then figures/summary.csv (what `make figures` runs).
     All(TargetArgs),
@@ -450,6 +457,17 @@ pub struct PredictArgs {
     pub thermal: ThermalArgs,
 
     /// Print one JSON object instead of the summary.
+    ///
+    /// Keys: `lubricant` {source (table1, given, datasheet), eta0_pa_s, alpha_per_pa,
+    /// alpha_source, alpha_correlated, alpha_band_per_pa ([low, high] 1/Pa when correlated,
+    /// else null); for a datasheet also datasheet, temperature_c, nu_mm2_s and rho_kg_m3 at
+    /// it, nu40_mm2_s, nu100_mm2_s, viscosity_index, expansion15_per_k}; the contact's ph_pa,
+    /// m, l, s_bar, slip, tau0_pa, eta_bar_ph, hc_eq10, hc_m, tau_c; Eq. (14)'s mu_bar, mu;
+    /// the refined formula's mu_bar_refined, mu_refined and their bands
+    /// mu_bar_refined_band, mu_refined_band (its own 95 % band, around its range over the
+    /// alpha band when alpha is correlated); tau_c_band, hc_m_band, mu_bar_band, mu_band
+    /// ([low, high] over the alpha band when alpha is correlated, else null); thermal,
+    /// mu_bar_thermal, warnings, solve and difference (--solve), compute_seconds.
     #[arg(long, help_heading = "Output")]
     pub json: bool,
     /// No per-cycle progress of --solve on stderr.
