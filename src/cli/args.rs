@@ -477,7 +477,7 @@ pub struct PredictArgs {
 
 /// A lubricant's datasheet (`repro solve`, `repro predict`): eta0 = nu rho at --temperature
 /// by ASTM D341 and D1250, alpha from AGMA 925 for the base oil unless --alpha is given.
-#[derive(Debug, Args, Default)]
+#[derive(Debug, Args)]
 pub struct DatasheetArgs {
     /// Kinematic viscosity at 40 C, mm^2/s (or --iso-vg).
     #[arg(long, help_heading = "Lubricant datasheet")]
