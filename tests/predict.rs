@@ -1,7 +1,7 @@
 //! `repro predict` (Eq. 14 for a user's contact) and `repro fig8` (measured data on the
 //! mastercurve): outputs, warnings, and errors that name the flag, file, row and column.
 
-use crate::support::{appendix_problem, args, repro, repro_in, WORKED_FLAGS};
+use crate::support::{appendix_problem, args, repro, repro_in, with_flags, WORKED_FLAGS};
 use std::path::PathBuf;
 
 /// `repro predict` at the Appendix (Table 4) case.
@@ -158,15 +158,8 @@ fn predict_bad_flags_are_named() {
         (&["--e-prime", "0"], "--e-prime"),
     ];
     for (extra, flag) in cases {
-        // Later flags override the worked case's (clap keeps the last value).
-        let mut args: Vec<&str> = worked();
-        for pair in extra.chunks(2) {
-            match args.iter().position(|a| *a == pair[0]) {
-                Some(i) => args[i + 1] = pair[1],
-                None => args.extend_from_slice(pair),
-            }
-        }
-        let (code, _, err) = repro(&args);
+        // The flags replace the worked case's.
+        let (code, _, err) = repro(&with_flags(worked(), extra));
         assert_eq!(code, 2, "{extra:?}: {err}");
         assert!(err.contains(flag), "{extra:?}: {err}");
     }

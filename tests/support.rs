@@ -48,6 +48,19 @@ pub fn appendix_problem() -> Problem {
         .expect("cases/table4.toml")
 }
 
+/// `args` with each flag-value pair of `extra` replacing the flag's value where `args` has
+/// the flag, appended where it does not (clap would keep the last value, but a test that
+/// states the final command line reads better).
+pub fn with_flags<'a>(mut args: Vec<&'a str>, extra: &[&'a str]) -> Vec<&'a str> {
+    for pair in extra.chunks(2) {
+        match args.iter().position(|a| *a == pair[0]) {
+            Some(i) => args[i + 1] = pair[1],
+            None => args.extend_from_slice(pair),
+        }
+    }
+    args
+}
+
 /// `first`, then `rest`: a command line.
 pub fn args<'a>(first: &[&'a str], rest: &[&'a str]) -> Vec<&'a str> {
     first.iter().chain(rest).copied().collect()

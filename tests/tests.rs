@@ -5,6 +5,7 @@ mod cli;
 mod continuation;
 mod line_contact;
 mod lss;
+mod lubricant;
 mod mastercurve;
 mod one_rule;
 mod point_contact;

@@ -446,6 +446,8 @@ pub fn transform(data: &Dataset, lubs: &LubricantTable) -> Result<Vec<ReducedRow
                         err("temperature_c", l.to_string())
                     }
                     CaseError::Lubricant(l) => err("lubricant", l.to_string()),
+                    // The measured-data files give no datasheet; the column is the key.
+                    CaseError::Datasheet(d) => err(d.field(), d.to_string()),
                 })
         })
         .collect()

@@ -18,6 +18,7 @@ pub mod measured;
 pub mod merge;
 pub mod oracle;
 pub mod plot;
+pub mod prediction;
 pub mod provenance;
 pub mod refined;
 pub mod report;

@@ -643,6 +643,16 @@ pub fn describe(case: &Case, level: u32) -> String {
                     g(alpha_per_pa * 1e9),
                     g(eta0_pa_s * 1e3)
                 ),
+                LubricantSpec::Datasheet {
+                    datasheet,
+                    temperature_c,
+                    alpha_per_gpa,
+                } => format!(
+                    "{} at {} C{}",
+                    datasheet.label(),
+                    g(*temperature_c),
+                    alpha_per_gpa.map_or_else(String::new, |a| format!(", alpha {} 1/GPa", g(a)))
+                ),
             };
             format!(
                 "{lub}, p_H {} GPa, u_m {} m/s, S {}, tau0 {} MPa, Rx/Ry {}",

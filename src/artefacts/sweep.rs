@@ -24,8 +24,34 @@
 //! d = [1.0]                        # Rx/Ry
 //! e_prime_gpa = [226.0]
 //! ```
+//!
+//! A study may define its own lubricants from their datasheets, inline, as `[lubricants.NAME]`
+//! tables (the keys of [`crate::physics::datasheet::Datasheet`], and `alpha_per_gpa` when the
+//! pressure-viscosity coefficient is known; without it AGMA 925's correlation gives it), and
+//! use them by name with a temperature in `[grid]`, `[defaults]` or `[[point]]`:
+//!
+//! ```toml
+//! [lubricants.gear-oil]
+//! iso_vg = 68                     # or nu40_mm2_s
+//! viscosity_index = 97            # or nu100_mm2_s
+//! rho15_kg_m3 = 880
+//! base_oil = "mineral"            # mineral | pao | pag
+//! # expansion15_per_k = 6.9e-4    # default: ASTM D1250 Table 54D
+//! # alpha_per_gpa = 22.0          # default: AGMA 925 from eta at the temperature
+//! [grid]
+//! lubricant = ["gear-oil"]
+//! temperature_c = [60.0, 80.0]    # any temperature in -20..150 C
+//! ```
+//!
+//! The names of Table 1 (`cases/lubricants.toml`) keep meaning Table 1's lubricants: a study
+//! cannot redefine them. Each case carries the whole datasheet, so the case alone determines
+//! its cache key; two studies with the same oil share their solves whatever they call it.
 
-use crate::physics::case::{Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec};
+use crate::physics::case::{
+    Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec,
+};
+use crate::physics::datasheet::Datasheet;
+use crate::physics::lubricant::LubricantTable;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -139,6 +165,69 @@ pub struct SweepFile {
     /// Explicit points.
     #[serde(default)]
     pub point: Vec<PointSpec>,
+    /// The study's own lubricants by name: a datasheet, and `alpha_per_gpa` when known
+    /// (read by [`study_lubricants`]).
+    #[serde(default)]
+    pub lubricants: BTreeMap<String, toml::Table>,
+}
+
+/// A study's own lubricant: its datasheet and, when the user knows it, its `alpha`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StudyLubricant {
+    /// The datasheet.
+    pub datasheet: Datasheet,
+    /// Pressure-viscosity coefficient, 1/GPa, used instead of the correlation.
+    pub alpha_per_gpa: Option<f64>,
+}
+
+/// The `[lubricants.NAME]` tables of a study, checked: a name of Table 1 is refused, and
+/// each datasheet must be complete and consistent (its own errors name
+/// `lubricants.NAME.KEY`).
+pub fn study_lubricants(
+    file: &str,
+    tables: &BTreeMap<String, toml::Table>,
+) -> Result<BTreeMap<String, StudyLubricant>, SweepError> {
+    let table1 = LubricantTable::table1();
+    let mut out = BTreeMap::new();
+    for (name, table) in tables {
+        let here = format!("lubricants.{name}");
+        if table1.0.contains_key(name) {
+            return Err(field(
+                file,
+                &here,
+                format!("'{name}' is a lubricant of Table 1 (cases/lubricants.toml); give yours another name"),
+            ));
+        }
+        let mut table = table.clone();
+        let alpha_per_gpa = match table.remove("alpha_per_gpa") {
+            None => None,
+            Some(v) => Some(
+                v.as_float()
+                    .or(v.as_integer().map(|i| i as f64))
+                    .ok_or_else(|| {
+                        field(
+                            file,
+                            &format!("{here}.alpha_per_gpa"),
+                            "must be a number (1/GPa)",
+                        )
+                    })?,
+            ),
+        };
+        let datasheet: Datasheet = toml::Value::Table(table)
+            .try_into()
+            .map_err(|e| field(file, &here, e.to_string().trim_end()))?;
+        datasheet
+            .resolve()
+            .map_err(|e| field(file, &format!("{here}.{}", e.field()), e.to_string()))?;
+        out.insert(
+            name.clone(),
+            StudyLubricant {
+                datasheet,
+                alpha_per_gpa,
+            },
+        );
+    }
+    Ok(out)
 }
 
 /// A parsed sweep: its title, physics, level, and the cases in file order.
@@ -224,6 +313,17 @@ fn with_defaults(p: &PointSpec, d: &PointSpec) -> PointSpec {
 impl PointSpec {
     /// The case this point describes, or an error naming the missing field.
     pub fn to_case(&self, file: &str, physics: Physics) -> Result<Case, SweepError> {
+        self.to_case_with(file, physics, &BTreeMap::new())
+    }
+
+    /// The case this point describes, its `lubricant` looked up first among the study's own
+    /// `lubricants`, then in Table 1.
+    pub fn to_case_with(
+        &self,
+        file: &str,
+        physics: Physics,
+        lubricants: &BTreeMap<String, StudyLubricant>,
+    ) -> Result<Case, SweepError> {
         let need = |v: Option<f64>, name: &str| v.ok_or_else(|| field(file, name, "missing"));
         let dimensionless = self.m.is_some() || self.l.is_some() || self.s_bar.is_some();
         let spec = if dimensionless {
@@ -257,6 +357,25 @@ impl PointSpec {
             })
         } else {
             let lubricant = match (&self.lubricant, self.alpha_per_gpa) {
+                (Some(name), None) if lubricants.contains_key(name) => {
+                    let own = &lubricants[name];
+                    let spec = LubricantSpec::Datasheet {
+                        datasheet: own.datasheet.clone(),
+                        temperature_c: need(self.temperature_c, "temperature_c")?,
+                        alpha_per_gpa: own.alpha_per_gpa,
+                    };
+                    // The datasheet itself was checked; what is left is the temperature.
+                    if let Some(Err(e)) = spec.datasheet_state() {
+                        let key = match &e {
+                            CaseError::Datasheet(d) if d.field() != "temperature_c" => {
+                                format!("lubricants.{name}.{}", d.field())
+                            }
+                            _ => "temperature_c".to_string(),
+                        };
+                        return Err(field(file, &key, e.to_string()));
+                    }
+                    spec
+                }
                 (Some(name), None) => LubricantSpec::Named {
                     lubricant: name.clone(),
                     temperature_c: need(self.temperature_c, "temperature_c")?,
@@ -324,9 +443,10 @@ impl Sweep {
                 "the sweep has no [grid] and no [[point]]",
             ));
         }
+        let lubricants = study_lubricants(file, &raw.lubricants)?;
         let cases = points
             .iter()
-            .map(|p| p.to_case(file, raw.physics))
+            .map(|p| p.to_case_with(file, raw.physics, &lubricants))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Sweep {
             title: raw.title,
@@ -415,6 +535,124 @@ mod tests {
         if let Spec::Dimensionless(d) = &s.cases[0].spec {
             assert!((d.slip - 0.2).abs() < 1e-15, "S = tau0_hat S-bar");
         }
+    }
+
+    /// A study of the ISO VG 68 gear oil (`physics::case::tests::gear_oil`) at 80 C, with
+    /// `extra` lines in its lubricant table and `point` keys in its one point.
+    fn gear_study(extra: &str, point: &str) -> String {
+        format!(
+            "title = 'g'\n[lubricants.gear-oil]\niso_vg = 68\nviscosity_index = 97\n\
+             rho15_kg_m3 = 880\nbase_oil = 'mineral'\n{extra}\n[[point]]\n\
+             lubricant = 'gear-oil'\nph_gpa = 1.0\num_m_s = 5.0\nslip = 0.01\ntau0_mpa = 5.0\n\
+             rx_m = 1.03875e-2\ne_prime_gpa = 226.0\n{point}\n"
+        )
+    }
+
+    #[test]
+    fn a_study_lubricant_becomes_a_datasheet_case() {
+        use crate::physics::case::tests::gear_oil;
+        let s = Sweep::parse("g.toml", &gear_study("", "temperature_c = 80.0")).unwrap();
+        let Spec::Physical(p) = &s.cases[0].spec else {
+            panic!("physical")
+        };
+        assert_eq!(p.lubricant, gear_oil(None));
+        // The user's alpha is carried into the case (and so into its key).
+        let s = Sweep::parse(
+            "g.toml",
+            &gear_study("alpha_per_gpa = 25", "temperature_c = 80.0"),
+        )
+        .unwrap();
+        let Spec::Physical(p) = &s.cases[0].spec else {
+            panic!("physical")
+        };
+        assert_eq!(p.lubricant, gear_oil(Some(25.0)));
+        // In a grid, with Table 1 beside it: Table 1's names keep meaning Table 1.
+        let text = gear_study("", "temperature_c = 80.0").replace(
+            "[[point]]",
+            "[grid]\nlubricant = ['gear-oil', 'mineral-oil-a']\ntemperature_c = [60.0]\n\
+             ph_gpa = [1.0]\num_m_s = [5.0]\nslip = [0.01]\ntau0_mpa = [5.0]\nrx_m = [0.01]\n\
+             e_prime_gpa = [226.0]\n[[point]]",
+        );
+        let s = Sweep::parse("g.toml", &text).unwrap();
+        let lubs: Vec<_> = s
+            .cases
+            .iter()
+            .map(|c| match &c.spec {
+                Spec::Physical(p) => p.lubricant.clone(),
+                Spec::Dimensionless(_) => unreachable!(),
+            })
+            .collect();
+        assert!(
+            matches!(&lubs[0], LubricantSpec::Datasheet { temperature_c, .. } if *temperature_c == 60.0)
+        );
+        assert!(
+            matches!(&lubs[1], LubricantSpec::Named { lubricant, .. } if lubricant == "mineral-oil-a")
+        );
+        assert_eq!(lubs[2], gear_oil(None));
+    }
+
+    #[test]
+    fn study_lubricant_errors_name_the_file_and_field() {
+        let err = |extra: &str, point: &str| {
+            Sweep::parse("g.toml", &gear_study(extra, point))
+                .unwrap_err()
+                .to_string()
+        };
+        for (extra, point, needle) in [
+            ("", "temperature_c = 200.0", "g.toml: temperature_c: "),
+            ("", "", "g.toml: temperature_c: missing"),
+            (
+                "vi = 3",
+                "temperature_c = 80.0",
+                "g.toml: lubricants.gear-oil: unknown field `vi`",
+            ),
+            (
+                "nu40_mm2_s = 68.0",
+                "temperature_c = 80.0",
+                "g.toml: lubricants.gear-oil.iso_vg: ",
+            ),
+            (
+                "alpha_per_gpa = 'x'",
+                "temperature_c = 80.0",
+                "g.toml: lubricants.gear-oil.alpha_per_gpa: ",
+            ),
+            (
+                "alpha_per_gpa = -2.0",
+                "temperature_c = 80.0",
+                "g.toml: lubricants.gear-oil.alpha_per_gpa: ",
+            ),
+            (
+                "expansion15_per_k = 0.0",
+                "temperature_c = 80.0",
+                "g.toml: lubricants.gear-oil.expansion15_per_k: ",
+            ),
+        ] {
+            let e = err(extra, point);
+            assert!(e.starts_with(needle), "{extra} / {point}: {e}");
+        }
+        let e = Sweep::parse(
+            "g.toml",
+            &gear_study("", "temperature_c = 80.0").replace(
+                "iso_vg = 68\nviscosity_index = 97",
+                "nu40_mm2_s = 68.0\nnu100_mm2_s = 70.0",
+            ),
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.starts_with("g.toml: lubricants.gear-oil.nu100_mm2_s: "),
+            "{e}"
+        );
+        let e = Sweep::parse(
+            "g.toml",
+            &gear_study("", "temperature_c = 80.0").replace("gear-oil", "mineral-oil-a"),
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.starts_with("g.toml: lubricants.mineral-oil-a: ") && e.contains("Table 1"),
+            "{e}"
+        );
     }
 
     #[test]

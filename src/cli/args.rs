@@ -20,8 +20,9 @@ pub struct Cli {
 pub enum Command {
     /// Solve one elliptical contact and print film thickness and reduced friction.
     ///
-    /// Either in Moes groups (--m, --l, --s-bar; Barus, incompressible, Eyring by default) or
-    /// physically (--lubricant or --alpha/--eta0, --ph, --um, --slip, --tau0; Roelands,
+    /// Either in Moes groups (--m, --l, --s-bar, with --eta0 and --ph where Roelands or
+    /// Dowson-Higginson need them; Barus, incompressible, Eyring by default) or physically
+    /// (--lubricant or --alpha/--eta0 or a datasheet, --ph, --um, --slip, --tau0; Roelands,
     /// Dowson-Higginson, Eyring by default, the physics of Figs. 4-6).
     Solve(Box<SolveArgs>),
     /// Table 4: grid convergence of the Appendix case at levels 5-8, beside the paper's values.
@@ -59,6 +60,12 @@ pub enum Command {
     Lss(TargetArgs),
     /// Friction of your contact from the mastercurve, Eq. (14), in microseconds; with --solve
     /// also the full EHL solve beside it.
+    ///
+    /// The lubricant is one of Table 1 (--lubricant, --temperature), given (--alpha, --eta0),
+    /// or a datasheet (--iso-vg or --nu40, --vi or --nu100, --rho15, --base-oil) at any
+    /// --temperature: eta0 = nu rho by ASTM D341 and D1250, alpha from AGMA 925 unless
+    /// --alpha is given. A correlated alpha is said so, with its band, and every output it
+    /// moves is printed with its range over that band.
     Predict(Box<PredictArgs>),
     /// Every target, then figures/summary.csv (what `make figures` runs).
     All(TargetArgs),
@@ -271,10 +278,12 @@ pub struct SolveArgs {
     /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
     #[arg(long, help_heading = "Physical form")]
     pub lubricant: Option<String>,
-    /// Temperature, C (with --lubricant).
+    /// Temperature, C (with --lubricant: 40, 60 or 100 C, or between; with a datasheet: any
+    /// temperature in -20..150 C).
     #[arg(long, help_heading = "Physical form")]
     pub temperature: Option<f64>,
-    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant).
+    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant; with a datasheet, instead
+    /// of the AGMA 925 correlation).
     #[arg(long, help_heading = "Physical form")]
     pub alpha: Option<f64>,
     /// Maximum Hertzian pressure p_H, Pa.
@@ -299,6 +308,8 @@ pub struct SolveArgs {
         help_heading = "Physical form"
     )]
     pub e_prime: f64,
+    #[command(flatten)]
+    pub datasheet: DatasheetArgs,
 
     // Both forms.
     /// Slide-to-roll ratio S in [0, 2]. In the dimensionless form it fixes, with S-bar, the
@@ -390,10 +401,12 @@ pub struct PredictArgs {
     /// Lubricant of Table 1 (cases/lubricants.toml): traction-fluid, mineral-oil-a, 5p4e.
     #[arg(long, help_heading = "Lubricant")]
     pub lubricant: Option<String>,
-    /// Temperature, C (with --lubricant).
+    /// Temperature, C (with --lubricant: 40, 60 or 100 C, or between; with a datasheet: any
+    /// temperature in -20..150 C).
     #[arg(long, help_heading = "Lubricant")]
     pub temperature: Option<f64>,
-    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant).
+    /// Pressure-viscosity coefficient, 1/Pa (instead of --lubricant; with a datasheet, instead
+    /// of the AGMA 925 correlation).
     #[arg(long, help_heading = "Lubricant")]
     pub alpha: Option<f64>,
     /// Ambient viscosity eta0, Pa s (with --alpha).
@@ -402,6 +415,8 @@ pub struct PredictArgs {
     /// Viscosity-pressure law of eta(p_H) in tau_c (default roelands, as in Figs. 4-7).
     #[arg(long, value_enum, help_heading = "Lubricant")]
     pub viscosity: Option<ViscosityArg>,
+    #[command(flatten)]
+    pub datasheet: DatasheetArgs,
 
     /// Maximum Hertzian pressure p_H, Pa (or --load).
     #[arg(long, help_heading = "Contact")]
@@ -442,11 +457,74 @@ pub struct PredictArgs {
     pub thermal: ThermalArgs,
 
     /// Print one JSON object instead of the summary.
+    ///
+    /// Keys: `lubricant` {source (table1, given, datasheet), eta0_pa_s, alpha_per_pa,
+    /// alpha_source, alpha_correlated, alpha_band_per_pa ([low, high] 1/Pa when correlated,
+    /// else null); for a datasheet also datasheet, temperature_c, nu_mm2_s and rho_kg_m3 at
+    /// it, nu40_mm2_s, nu100_mm2_s, viscosity_index, expansion15_per_k}; the contact's ph_pa,
+    /// m, l, s_bar, slip, tau0_pa, eta_bar_ph, hc_eq10, hc_m, tau_c; Eq. (14)'s mu_bar, mu;
+    /// the refined formula's mu_bar_refined, mu_refined and their bands
+    /// mu_bar_refined_band, mu_refined_band (its own 95 % band, around its range over the
+    /// alpha band when alpha is correlated); tau_c_band, hc_m_band, mu_bar_band, mu_band
+    /// ([low, high] over the alpha band when alpha is correlated, else null); thermal,
+    /// mu_bar_thermal, warnings, solve and difference (--solve), compute_seconds.
     #[arg(long, help_heading = "Output")]
     pub json: bool,
     /// No per-cycle progress of --solve on stderr.
     #[arg(long, short, help_heading = "Output")]
     pub quiet: bool,
+}
+
+/// A lubricant's datasheet (`repro solve`, `repro predict`): eta0 = nu rho at --temperature
+/// by ASTM D341 and D1250, alpha from AGMA 925 for the base oil unless --alpha is given.
+#[derive(Debug, Args)]
+pub struct DatasheetArgs {
+    /// Kinematic viscosity at 40 C, mm^2/s (or --iso-vg).
+    #[arg(long, help_heading = "Lubricant datasheet")]
+    pub nu40: Option<f64>,
+    /// ISO 3448 viscosity grade (2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, ..., 3200): nu40 is
+    /// its midpoint (or --nu40).
+    #[arg(long = "iso-vg", help_heading = "Lubricant datasheet")]
+    pub iso_vg: Option<u32>,
+    /// Kinematic viscosity at 100 C, mm^2/s (or --vi).
+    #[arg(long, help_heading = "Lubricant datasheet")]
+    pub nu100: Option<f64>,
+    /// Viscosity index, ASTM D2270: nu100 follows from it and nu40 (or --nu100).
+    #[arg(long, help_heading = "Lubricant datasheet")]
+    pub vi: Option<f64>,
+    /// Density at 15 C, kg/m^3.
+    #[arg(long, help_heading = "Lubricant datasheet")]
+    pub rho15: Option<f64>,
+    /// Thermal expansion coefficient at 15 C, 1/K (default: ASTM D1250 Table 54D's for
+    /// rho15).
+    #[arg(long, help_heading = "Lubricant datasheet")]
+    pub expansion15: Option<f64>,
+    /// Base-oil type, for the pressure-viscosity correlation.
+    #[arg(long = "base-oil", value_enum, help_heading = "Lubricant datasheet")]
+    pub base_oil: Option<BaseOilArg>,
+}
+
+impl DatasheetArgs {
+    /// Whether any datasheet flag was given.
+    pub fn any(&self) -> bool {
+        self.nu40.is_some()
+            || self.iso_vg.is_some()
+            || self.nu100.is_some()
+            || self.vi.is_some()
+            || self.rho15.is_some()
+            || self.expansion15.is_some()
+            || self.base_oil.is_some()
+    }
+}
+
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum BaseOilArg {
+    /// Mineral oil.
+    Mineral,
+    /// Polyalphaolefin without viscosity-index improver.
+    Pao,
+    /// Polyalkylene glycol.
+    Pag,
 }
 
 /// Flags of `repro accuracy`.

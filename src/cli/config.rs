@@ -1,7 +1,10 @@
 //! Flags turned once into what the library takes: a [`Case`], solver parameters, a line
 //! problem, the pipeline's [`Context`]. Every error names the flag.
 
-use super::args::{DensityArg, DomainArg, RheologyArg, SolveArgs, TargetArgs, ViscosityArg};
+use super::args::{
+    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, RheologyArg, SolveArgs, TargetArgs,
+    ViscosityArg,
+};
 use anyhow::{anyhow, bail, Result};
 use repro::artefacts::cache::Cache;
 use repro::artefacts::run::RunProgress;
@@ -9,9 +12,11 @@ use repro::artefacts::target::{check_writable, Context};
 use repro::physics::case::{
     Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
 };
+use repro::physics::datasheet::Datasheet;
 use repro::physics::density::DensityLaw;
 use repro::physics::line_contact::{LineDimensionlessCase, LinePhysicalCase, LineProblem};
 use repro::physics::lubricant::{LubricantError, LubricantTable};
+use repro::physics::pressure_viscosity::BaseOil;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
 use repro::physics::viscosity::ViscosityLaw;
 use repro::solver::grid::Domain;
@@ -38,18 +43,79 @@ pub fn flag_error(e: CaseError) -> anyhow::Error {
         CaseError::Lubricant(l @ LubricantError::Temperature { .. }) => {
             anyhow!("--temperature: {l}")
         }
+        CaseError::Datasheet(d) => anyhow!("--{}: {d}", datasheet_flag(d.field())),
         other => anyhow!("{other}"),
     }
 }
 
+/// The flag of a datasheet key ([`repro::physics::datasheet::DatasheetError::field`]).
+fn datasheet_flag(key: &str) -> &str {
+    match key {
+        "nu40_mm2_s" => "nu40",
+        "iso_vg" => "iso-vg",
+        "nu100_mm2_s" => "nu100",
+        "viscosity_index" => "vi",
+        "rho15_kg_m3" => "rho15",
+        "expansion15_per_k" => "expansion15",
+        "base_oil" => "base-oil",
+        "alpha_per_gpa" => "alpha",
+        "temperature_c" => "temperature",
+        other => other,
+    }
+}
+
 /// The lubricant of the physical form (`repro solve`, `repro predict`): a lubricant of
-/// Table 1 at `--temperature`, or `--alpha` and `--eta0` given directly.
+/// Table 1 at `--temperature`, `--alpha` and `--eta0` given directly, or a datasheet at
+/// `--temperature` (with `--alpha` when the user knows it). Which flags go together is
+/// checked here; the datasheet's values are checked when the case is resolved.
 pub fn lubricant_spec(
     lubricant: Option<&str>,
     temperature: Option<f64>,
     alpha: Option<f64>,
     eta0: Option<f64>,
+    sheet: &DatasheetArgs,
 ) -> Result<LubricantSpec> {
+    if sheet.any() {
+        if lubricant.is_some() {
+            bail!("--lubricant: a lubricant of Table 1 and datasheet flags (--nu40, --iso-vg, --nu100, --vi, --rho15, --expansion15, --base-oil) cannot be mixed");
+        }
+        if eta0.is_some() {
+            bail!("--eta0: a datasheet gives eta0 (nu rho at --temperature); drop --eta0");
+        }
+        let one_of = |a: bool, b: bool, fa: &str, fb: &str| -> Result<()> {
+            match (a, b) {
+                (true, true) => bail!("{fb}: give {fa} or {fb}, not both"),
+                (false, false) => bail!("{fa}: required with a datasheet (or {fb})"),
+                _ => Ok(()),
+            }
+        };
+        one_of(
+            sheet.nu40.is_some(),
+            sheet.iso_vg.is_some(),
+            "--nu40",
+            "--iso-vg",
+        )?;
+        one_of(sheet.nu100.is_some(), sheet.vi.is_some(), "--nu100", "--vi")?;
+        let datasheet = Datasheet {
+            nu40_mm2_s: sheet.nu40,
+            iso_vg: sheet.iso_vg,
+            nu100_mm2_s: sheet.nu100,
+            viscosity_index: sheet.vi,
+            rho15_kg_m3: need(sheet.rho15, "--rho15 (with a datasheet)")?,
+            expansion15_per_k: sheet.expansion15,
+            base_oil: match sheet.base_oil {
+                Some(BaseOilArg::Mineral) => BaseOil::Mineral,
+                Some(BaseOilArg::Pao) => BaseOil::Polyalphaolefin,
+                Some(BaseOilArg::Pag) => BaseOil::Polyglycol,
+                None => bail!("--base-oil: required with a datasheet (mineral, pao or pag)"),
+            },
+        };
+        return Ok(LubricantSpec::Datasheet {
+            datasheet,
+            temperature_c: need(temperature, "--temperature (with a datasheet)")?,
+            alpha_per_gpa: alpha.map(|a| a * 1e9),
+        });
+    }
     Ok(match (lubricant, alpha) {
         (Some(name), None) => LubricantSpec::Named {
             lubricant: name.to_string(),
@@ -115,13 +181,19 @@ impl SolveArgs {
     /// The case the flags describe (which form, and its physics).
     pub fn case(&self) -> Result<Case> {
         let dimensionless = self.m.is_some() || self.l.is_some() || self.s_bar.is_some();
-        let physical = self.lubricant.is_some()
-            || self.ph.is_some()
+        // --ph and --eta0 belong to both forms (the dimensionless form takes them for
+        // Roelands and Dowson-Higginson), so they decide nothing when --m/--l/--s-bar are
+        // given; alone they ask for the physical form.
+        let physical_only = self.lubricant.is_some()
+            || self.temperature.is_some()
             || self.um.is_some()
             || self.tau0.is_some()
-            || self.alpha.is_some();
+            || self.alpha.is_some()
+            || self.datasheet.any();
+        let physical =
+            physical_only || (!dimensionless && (self.ph.is_some() || self.eta0.is_some()));
         let spec = match (dimensionless, physical) {
-            (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--ph/--um/--tau0 (physical form) cannot be mixed"),
+            (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--temperature/--alpha/--um/--tau0 or a datasheet (physical form) cannot be mixed"),
             (false, false) => bail!("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help"),
             (true, false) => Spec::Dimensionless(DimensionlessCase {
                 m: need(self.m, "--m")?,
@@ -133,7 +205,7 @@ impl SolveArgs {
                 ph_pa: self.ph,
             }),
             (false, true) => Spec::Physical(PhysicalCase {
-                lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0)?,
+                lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0, &self.datasheet)?,
                 ph_pa: need(self.ph, "--ph")?,
                 um_m_s: need(self.um, "--um")?,
                 slip: need(self.slip, "--slip")?,

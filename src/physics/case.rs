@@ -2,6 +2,7 @@
 //! problem it becomes. The dimensionless numbers (M, L, S-bar, alpha-bar, lambda, kappa, N)
 //! are computed here and nowhere else.
 
+use super::datasheet::{Datasheet, DatasheetError, DatasheetState};
 use super::density::{Density, DensityLaw};
 use super::hertz::Hertz;
 use super::lubricant::{LubricantError, LubricantState, LubricantTable};
@@ -59,6 +60,20 @@ pub enum LubricantSpec {
         /// Ambient viscosity, Pa s.
         eta0_pa_s: f64,
     },
+    /// A lubricant's datasheet at a temperature: `eta0 = nu rho` by ASTM D341 and D1250,
+    /// `alpha` the user's or AGMA 925's ([`super::datasheet`]). The whole datasheet is part
+    /// of the case, so the case alone determines its cache key.
+    Datasheet {
+        /// The datasheet (its keys flattened: `iso_vg`, `rho15_kg_m3`, ...).
+        #[serde(flatten)]
+        datasheet: Datasheet,
+        /// Temperature, C.
+        temperature_c: f64,
+        /// Pressure-viscosity coefficient the user knows, 1/GPa: used instead of the
+        /// correlation.
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        alpha_per_gpa: Option<f64>,
+    },
 }
 
 impl LubricantSpec {
@@ -77,8 +92,45 @@ impl LubricantSpec {
                 alpha_per_pa: positive("alpha", *alpha_per_pa)?,
                 eta0_pa_s: positive("eta0", *eta0_pa_s)?,
             }),
+            LubricantSpec::Datasheet {
+                datasheet,
+                temperature_c,
+                alpha_per_gpa,
+            } => Ok(datasheet_at(datasheet, *temperature_c, *alpha_per_gpa)?.state),
         }
     }
+
+    /// The temperature the lubricant is taken at, C; `None` when `alpha` and `eta0` are given.
+    pub fn temperature_c(&self) -> Option<f64> {
+        match self {
+            LubricantSpec::Named { temperature_c, .. }
+            | LubricantSpec::Datasheet { temperature_c, .. } => Some(*temperature_c),
+            LubricantSpec::Given { .. } => None,
+        }
+    }
+
+    /// For a datasheet lubricant, what the solver does not need and a report shows: the
+    /// viscosity and density at the temperature, and whether `alpha` was correlated (with
+    /// the correlation's band and source) or given; `None` for the other lubricants.
+    pub fn datasheet_state(&self) -> Option<Result<DatasheetState, CaseError>> {
+        let LubricantSpec::Datasheet {
+            datasheet,
+            temperature_c,
+            alpha_per_gpa,
+        } = self
+        else {
+            return None;
+        };
+        Some(datasheet_at(datasheet, *temperature_c, *alpha_per_gpa))
+    }
+}
+
+fn datasheet_at(
+    datasheet: &Datasheet,
+    temperature_c: f64,
+    alpha_per_gpa: Option<f64>,
+) -> Result<DatasheetState, CaseError> {
+    Ok(datasheet.resolve()?.at(temperature_c, alpha_per_gpa)?)
 }
 
 /// A contact given by its physical operating conditions (SI units).
@@ -157,6 +209,10 @@ pub enum CaseError {
     /// The lubricant lookup failed.
     #[error(transparent)]
     Lubricant(#[from] LubricantError),
+    /// A datasheet lubricant is inconsistent or asked outside its laws' range
+    /// ([`DatasheetError::field`] names the key).
+    #[error(transparent)]
+    Datasheet(#[from] DatasheetError),
 }
 
 pub(super) fn field(field: &'static str, message: impl Into<String>) -> CaseError {
@@ -571,6 +627,129 @@ pub(crate) mod tests {
         let h = super::super::film::hc_eq10(p.groups.m, p.groups.l) / p.groups.moes_film_scale;
         let centre = p.eyring_n_s() * p.viscosity.eta_bar(1.0) / h;
         assert!((centre / (p.tau_c() / 2.0) - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn table1_and_given_cases_serialise_as_before_the_datasheet_variant() {
+        // The case is serialised into every cache key: these strings are the JSON of the
+        // Named and Given forms before `LubricantSpec::Datasheet` existed (main at e616684),
+        // so Table 1's cases keep their keys and no figure moves.
+        let named = serde_json::to_string(&worked_case()).unwrap();
+        assert_eq!(named,
+            "{\"spec\":{\"physical\":{\"lubricant\":\"mineral-oil-a\",\"temperature_c\":40.0,\"ph_pa\":3000000000.0,\"um_m_s\":12.0,\"slip\":0.005,\"tau0_pa\":4000000.0,\"rx_m\":0.0103875,\"ry_m\":0.0103875,\"e_prime_pa\":226000000000.0}},\"physics\":{\"viscosity\":\"roelands\",\"density\":\"dowson-higginson\",\"rheology\":\"eyring\"}}"
+        );
+        let mut given = worked_case();
+        if let Spec::Physical(p) = &mut given.spec {
+            p.lubricant = LubricantSpec::Given {
+                alpha_per_pa: 21.6e-9,
+                eta0_pa_s: 8.24e-3,
+            };
+        }
+        let given_json = serde_json::to_string(&given).unwrap();
+        assert_eq!(given_json,
+            "{\"spec\":{\"physical\":{\"alpha_per_pa\":2.16e-8,\"eta0_pa_s\":0.00824,\"ph_pa\":3000000000.0,\"um_m_s\":12.0,\"slip\":0.005,\"tau0_pa\":4000000.0,\"rx_m\":0.0103875,\"ry_m\":0.0103875,\"e_prime_pa\":226000000000.0}},\"physics\":{\"viscosity\":\"roelands\",\"density\":\"dowson-higginson\",\"rheology\":\"eyring\"}}"
+        );
+        // And they read back as the same variants.
+        assert_eq!(serde_json::from_str::<Case>(&named).unwrap(), worked_case());
+        assert_eq!(serde_json::from_str::<Case>(&given_json).unwrap(), given);
+    }
+
+    /// ISO VG 68, VI 97, 880 kg/m^3 mineral gear oil at 80 C (docs/gear-oil-study.toml).
+    pub(crate) fn gear_oil(alpha_per_gpa: Option<f64>) -> LubricantSpec {
+        LubricantSpec::Datasheet {
+            datasheet: Datasheet {
+                nu40_mm2_s: None,
+                iso_vg: Some(68),
+                nu100_mm2_s: None,
+                viscosity_index: Some(97.0),
+                rho15_kg_m3: 880.0,
+                expansion15_per_k: None,
+                base_oil: super::super::pressure_viscosity::BaseOil::Mineral,
+            },
+            temperature_c: 80.0,
+            alpha_per_gpa,
+        }
+    }
+
+    #[test]
+    fn a_datasheet_case_reads_back_as_a_datasheet_and_resolves_to_nu_rho() {
+        let mut case = worked_case();
+        if let Spec::Physical(p) = &mut case.spec {
+            p.lubricant = gear_oil(None);
+        }
+        // JSON (the cache key) and TOML (a case file) both round-trip to the variant.
+        let json = serde_json::to_string(&case).unwrap();
+        assert!(
+            json.contains("\"iso_vg\":68") && !json.contains("alpha_per_gpa"),
+            "{json}"
+        );
+        assert_eq!(serde_json::from_str::<Case>(&json).unwrap(), case);
+        let toml_text = "[spec.physical]\niso_vg = 68\nviscosity_index = 97\nrho15_kg_m3 = 880\n\
+                         base_oil = 'mineral'\ntemperature_c = 80.0\nph_pa = 3.0e9\num_m_s = 12.0\n\
+                         slip = 0.005\ntau0_pa = 4.0e6\nrx_m = 1.03875e-2\nry_m = 1.03875e-2\n\
+                         e_prime_pa = 226.0e9\n[physics]\nviscosity = 'roelands'\n\
+                         density = 'dowson-higginson'\nrheology = 'eyring'\n";
+        assert_eq!(toml::from_str::<Case>(toml_text).unwrap(), case);
+        // eta0 = nu rho at 80 C and AGMA 925's alpha; datasheet_state says it was correlated.
+        let lubs = LubricantTable::table1();
+        let spec = gear_oil(None);
+        let s = spec.resolve(&lubs).unwrap();
+        let d = spec.datasheet_state().unwrap().unwrap();
+        assert_eq!(s, d.state);
+        assert_eq!(s.eta0_pa_s, d.nu_mm2_s * 1e-6 * d.rho_kg_m3);
+        let est = d.correlated.expect("no alpha given: correlated");
+        assert_eq!(s.alpha_per_pa, est.alpha_per_pa);
+        assert!(est.low_per_pa <= s.alpha_per_pa && s.alpha_per_pa < est.high_per_pa);
+        // A given alpha replaces the correlation and is reported as given.
+        let given = gear_oil(Some(25.0));
+        let d = given.datasheet_state().unwrap().unwrap();
+        assert!(d.correlated.is_none());
+        assert!((d.state.alpha_per_pa / 25e-9 - 1.0).abs() < 1e-15);
+        assert_eq!(d.state.eta0_pa_s, s.eta0_pa_s);
+        // The Table 1 and given forms have no datasheet state.
+        assert!(worked_physical().lubricant.datasheet_state().is_none());
+    }
+
+    #[test]
+    fn datasheet_errors_name_their_key() {
+        let lubs = LubricantTable::table1();
+        let err = |spec: LubricantSpec| match spec.resolve(&lubs).unwrap_err() {
+            CaseError::Datasheet(e) => e.field(),
+            other => panic!("{other}"),
+        };
+        let with = |f: &dyn Fn(&mut Datasheet, &mut f64, &mut Option<f64>)| {
+            let mut spec = gear_oil(None);
+            if let LubricantSpec::Datasheet {
+                datasheet,
+                temperature_c,
+                alpha_per_gpa,
+            } = &mut spec
+            {
+                f(datasheet, temperature_c, alpha_per_gpa);
+            }
+            spec
+        };
+        assert_eq!(err(with(&|_, t, _| *t = 200.0)), "temperature_c");
+        assert_eq!(err(with(&|_, t, _| *t = -40.0)), "temperature_c");
+        assert_eq!(err(with(&|d, _, _| d.iso_vg = Some(70))), "iso_vg");
+        assert_eq!(err(with(&|d, _, _| d.nu40_mm2_s = Some(68.0))), "iso_vg");
+        assert_eq!(err(with(&|d, _, _| d.rho15_kg_m3 = 1300.0)), "rho15_kg_m3");
+        assert_eq!(
+            err(with(&|d, _, _| d.viscosity_index = Some(900.0))),
+            "viscosity_index"
+        );
+        assert_eq!(err(with(&|_, _, a| *a = Some(-1.0))), "alpha_per_gpa");
+        assert_eq!(
+            err(with(&|d, _, _| {
+                d.viscosity_index = None;
+                d.nu100_mm2_s = Some(70.0);
+            })),
+            "nu100_mm2_s"
+        );
+        assert_eq!(
+            err(with(&|d, _, _| d.expansion15_per_k = Some(0.0))),
+            "expansion15_per_k"
+        );
     }
 
     #[test]

@@ -327,6 +327,10 @@ impl LinePhysicalCase {
                 alpha_per_pa,
                 eta0_pa_s,
             } => (*alpha_per_pa, *eta0_pa_s),
+            LubricantSpec::Datasheet { .. } => {
+                let s = c.lubricant.resolve(lubricants)?;
+                (s.alpha_per_pa, s.eta0_pa_s)
+            }
         };
         Ok(LinePhysicalCase {
             alpha_per_pa,

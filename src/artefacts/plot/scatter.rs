@@ -5,7 +5,7 @@
 use super::{mastercurve, render_svg, Figure, Marker, Scale, Series};
 use crate::artefacts::fit::PAPER_C;
 use crate::artefacts::run::CaseRun;
-use crate::physics::case::{LubricantSpec, Spec};
+use crate::physics::case::Spec;
 
 const MARKERS: [Marker; 5] = [
     Marker::Circle,
@@ -32,9 +32,9 @@ fn series_key(name: &str, run: &CaseRun) -> String {
             }
         ),
         _ => match &run.case.spec {
-            Spec::Physical(p) => match &p.lubricant {
-                LubricantSpec::Named { temperature_c, .. } => format!("{temperature_c} °C"),
-                LubricantSpec::Given { .. } => "given lubricant".into(),
+            Spec::Physical(p) => match p.lubricant.temperature_c() {
+                Some(t) => format!("{t} °C"),
+                None => "given lubricant".into(),
             },
             Spec::Dimensionless(_) => "dimensionless".into(),
         },

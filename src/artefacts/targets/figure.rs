@@ -298,6 +298,11 @@ pub fn operating_cells(case: &Case) -> [String; 5] {
                     temperature_c,
                 } => (lubricant.clone(), num(*temperature_c)),
                 LubricantSpec::Given { .. } => ("given".to_string(), String::new()),
+                LubricantSpec::Datasheet {
+                    datasheet,
+                    temperature_c,
+                    ..
+                } => (datasheet.label(), num(*temperature_c)),
             };
             [
                 l,

@@ -92,6 +92,7 @@ pub(super) fn table2(ctx: &Context) -> Result<Built, String> {
             Spec::Physical(p) => match &p.lubricant {
                 LubricantSpec::Named { lubricant, .. } => lubricant.clone(),
                 LubricantSpec::Given { .. } => "given".into(),
+                LubricantSpec::Datasheet { datasheet, .. } => datasheet.label(),
             },
             Spec::Dimensionless(_) => "dimensionless".into(),
         };
@@ -165,10 +166,7 @@ pub(super) fn table3(ctx: &Context) -> Result<Built, String> {
         let p = crate::physics::case::Problem::from_case(c, &lubs)
             .map_err(|e| format!("cases/fig7.toml: {e}"))?;
         if let Spec::Physical(ph) = &c.spec {
-            let t = match &ph.lubricant {
-                LubricantSpec::Named { temperature_c, .. } => num(*temperature_c),
-                LubricantSpec::Given { .. } => String::new(),
-            };
+            let t = ph.lubricant.temperature_c().map(num).unwrap_or_default();
             rows.push(vec![
                 num(ph.rx_m / ph.ry_m),
                 num(ph.ph_pa / 1e9),

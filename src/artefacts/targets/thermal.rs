@@ -19,7 +19,7 @@ use crate::artefacts::run::{CaseRun, Job};
 use crate::artefacts::sweep::shipped_sweep;
 use crate::artefacts::table4::Table4Case;
 use crate::artefacts::target::{write, Built, Context};
-use crate::physics::case::{LubricantSpec, Spec};
+use crate::physics::case::Spec;
 use crate::physics::thermal::ISOTHERMAL_CORRECTION_MAX;
 
 /// The figures corrected: figure, sweep, lubricant as named in the summary.
@@ -62,10 +62,11 @@ impl Row<'_> {
     fn operating_point(&self) -> String {
         match &self.run.case.spec {
             Spec::Physical(p) => {
-                let t = match &p.lubricant {
-                    LubricantSpec::Named { temperature_c, .. } => format!("{temperature_c} C, "),
-                    LubricantSpec::Given { .. } => String::new(),
-                };
+                let t = p
+                    .lubricant
+                    .temperature_c()
+                    .map(|t| format!("{t} C, "))
+                    .unwrap_or_default();
                 format!(
                     "{t}{} GPa, {} m/s, S {} %, tau0 {} MPa",
                     p.ph_pa / 1e9,

@@ -1,0 +1,749 @@
+//! A lubricant as its datasheet gives it: kinematic viscosity at 40 C (measured, or an ISO VG
+//! grade), kinematic viscosity at 100 C (measured, or a viscosity index), density at 15 C and
+//! the base-oil type. From these: kinematic viscosity at any temperature (ASTM D341,
+//! [`super::walther`]), density (ASTM D1250 Table 54D), dynamic viscosity `eta = nu rho`, and
+//! the pressure-viscosity coefficient with its band (AGMA 925, [`super::pressure_viscosity`]).
+//!
+//! A datasheet in a case file reads, for example,
+//!
+//! ```toml
+//! iso_vg = 46               # or nu40_mm2_s = 46.0
+//! viscosity_index = 100     # or nu100_mm2_s = 6.8
+//! rho15_kg_m3 = 870
+//! base_oil = "mineral"      # "polyalphaolefin" ("pao") or "polyglycol" ("pag")
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+use super::lubricant::LubricantState;
+use super::pressure_viscosity::{
+    alpha_agma925, BaseOil, PressureViscosityError, PressureViscosityEstimate,
+};
+use super::viscosity_index::{nu100_from_viscosity_index, viscosity_index, ViscosityIndexError};
+use super::walther::{WaltherError, WaltherLine, WALTHER_TEMPERATURE_RANGE_C};
+
+/// ISO 3448 viscosity grades: `(grade, midpoint kinematic viscosity at 40 C in mm^2/s)`. A
+/// grade's limits are the midpoint +-10 %.
+pub const ISO_3448_GRADES: [(u32, f64); 20] = [
+    (2, 2.2),
+    (3, 3.2),
+    (5, 4.6),
+    (7, 6.8),
+    (10, 10.0),
+    (15, 15.0),
+    (22, 22.0),
+    (32, 32.0),
+    (46, 46.0),
+    (68, 68.0),
+    (100, 100.0),
+    (150, 150.0),
+    (220, 220.0),
+    (320, 320.0),
+    (460, 460.0),
+    (680, 680.0),
+    (1000, 1000.0),
+    (1500, 1500.0),
+    (2200, 2200.0),
+    (3200, 3200.0),
+];
+
+/// ASTM D1250 (API MPMS 11.1, ISO 91-1) Table 54D, lubricating oils: `K0` in
+/// `alpha15 = K0 / rho15^2 + K1 / rho15`, (kg/m^3)^2/K.
+pub const D1250_TABLE_54D_K0: f64 = 0.0;
+/// Table 54D `K1`, kg/(m^3 K).
+pub const D1250_TABLE_54D_K1: f64 = 0.6278;
+/// Densities at 15 C Table 54D covers, kg/m^3.
+pub const D1250_TABLE_54D_RHO15_KG_M3: (f64, f64) = (800.0, 1164.0);
+
+/// Errors of a datasheet.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum DatasheetError {
+    /// Neither of two fields that give a quantity.
+    #[error("give {field} or {alternative}")]
+    Missing {
+        /// One field.
+        field: &'static str,
+        /// The field that can replace it.
+        alternative: &'static str,
+    },
+    /// Both of two fields that give the same quantity.
+    #[error("give {field} or {other}, not both")]
+    Conflicting {
+        /// One field.
+        field: &'static str,
+        /// The other.
+        other: &'static str,
+    },
+    /// A grade not in ISO 3448.
+    #[error("iso_vg = {grade} is not an ISO 3448 grade (grades: {known})")]
+    UnknownIsoVg {
+        /// The grade given.
+        grade: u32,
+        /// The ISO 3448 grades.
+        known: String,
+    },
+    /// A density or expansion coefficient that is zero, negative or not finite.
+    #[error("{field} = {value}: must be a positive finite number")]
+    NotPositive {
+        /// The input's name.
+        field: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A density outside ASTM D1250 Table 54D, when its expansion coefficient is used.
+    #[error(
+        "rho15_kg_m3 = {rho15_kg_m3} is outside ASTM D1250 Table 54D ({lo}..{hi} kg/m^3); \
+         give expansion15_per_k to use another density"
+    )]
+    Rho15OutsideTable54D {
+        /// The density given, kg/m^3.
+        rho15_kg_m3: f64,
+        /// Lowest density of the table, kg/m^3.
+        lo: f64,
+        /// Highest density of the table, kg/m^3.
+        hi: f64,
+    },
+    /// A temperature outside the density law's range.
+    #[error(
+        "temperature_c = {temperature_c} C is outside the density law's range ({lo_c}..{hi_c} C)"
+    )]
+    TemperatureOutOfRange {
+        /// The temperature asked for, C.
+        temperature_c: f64,
+        /// Lowest accepted temperature, C.
+        lo_c: f64,
+        /// Highest accepted temperature, C.
+        hi_c: f64,
+    },
+    /// The viscosity-temperature line (ASTM D341).
+    #[error(transparent)]
+    Walther(#[from] WaltherError),
+    /// The viscosity index (ASTM D2270).
+    #[error(transparent)]
+    ViscosityIndex(#[from] ViscosityIndexError),
+    /// The pressure-viscosity correlation (AGMA 925).
+    #[error(transparent)]
+    PressureViscosity(#[from] PressureViscosityError),
+}
+
+impl DatasheetError {
+    /// The case-file key the error is about (a key of [`Datasheet`], `temperature_c` or
+    /// `alpha_per_gpa`), so that a command line can name its flag and a study its field.
+    pub fn field(&self) -> &'static str {
+        match self {
+            DatasheetError::Missing { field, .. } => field,
+            DatasheetError::Conflicting { other, .. } => other,
+            DatasheetError::UnknownIsoVg { .. } => "iso_vg",
+            DatasheetError::NotPositive { field, .. } => field,
+            DatasheetError::Rho15OutsideTable54D { .. } => "rho15_kg_m3",
+            DatasheetError::TemperatureOutOfRange { .. } => "temperature_c",
+            DatasheetError::Walther(e) => match e {
+                // The line is built through (40 C, nu40) and (100 C, nu100).
+                WaltherError::NotPositive { field, .. }
+                | WaltherError::ViscosityBelowRange { field, .. } => match *field {
+                    "nu1_mm2_s" => "nu40_mm2_s",
+                    "nu2_mm2_s" => "nu100_mm2_s",
+                    // A predicted viscosity below the line's floor: the temperature is too
+                    // high for this oil.
+                    _ => "temperature_c",
+                },
+                WaltherError::TemperatureOutOfRange { .. } => "temperature_c",
+                WaltherError::NotFalling { .. } => "nu100_mm2_s",
+            },
+            DatasheetError::ViscosityIndex(e) => match e {
+                ViscosityIndexError::NotPositive { field, .. } => field,
+                ViscosityIndexError::Nu100NotBelowNu40 { .. }
+                | ViscosityIndexError::Nu100BelowD2270 { .. } => "nu100_mm2_s",
+                ViscosityIndexError::ViscosityIndexOutOfRange { .. } => "viscosity_index",
+            },
+            // Unreachable from a datasheet (eta = nu rho > 0); the viscosity at the
+            // temperature is what it was computed from.
+            DatasheetError::PressureViscosity(_) => "temperature_c",
+        }
+    }
+}
+
+/// An ISO 3448 viscosity grade.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IsoVg {
+    grade: u32,
+    nu40_mm2_s: f64,
+}
+
+impl IsoVg {
+    /// The ISO 3448 grade `grade` (2, 3, 5, 7, 10, 15, ..., 3200).
+    pub fn new(grade: u32) -> Result<Self, DatasheetError> {
+        ISO_3448_GRADES
+            .iter()
+            .find(|(g, _)| *g == grade)
+            .map(|&(grade, nu40_mm2_s)| IsoVg { grade, nu40_mm2_s })
+            .ok_or_else(|| DatasheetError::UnknownIsoVg {
+                grade,
+                known: ISO_3448_GRADES
+                    .iter()
+                    .map(|(g, _)| g.to_string())
+                    .collect::<Vec<_>>()
+                    .join(", "),
+            })
+    }
+
+    /// The grade number.
+    pub fn grade(&self) -> u32 {
+        self.grade
+    }
+
+    /// Midpoint kinematic viscosity at 40 C, mm^2/s.
+    pub fn nu40_mm2_s(&self) -> f64 {
+        self.nu40_mm2_s
+    }
+
+    /// The grade's limits at 40 C, midpoint -10 % and +10 %, mm^2/s.
+    pub fn nu40_limits_mm2_s(&self) -> (f64, f64) {
+        (0.9 * self.nu40_mm2_s, 1.1 * self.nu40_mm2_s)
+    }
+}
+
+/// Density against temperature in the form of ASTM D1250 (API MPMS 11.1, ISO 91-1),
+///
+/// ```text
+/// rho(T) = rho15 exp(-a15 dT (1 + 0.8 a15 dT)),   dT = T - 15 C,
+/// ```
+///
+/// with the expansion coefficient `a15` (1/K) either given or from Table 54D (lubricating
+/// oils), `a15 = K0 / rho15^2 + K1 / rho15`, `K0 = 0`, `K1 = 0.6278 kg/(m^3 K)` (about
+/// 7.2e-4 1/K at 870 kg/m^3). The 54D constants and its 800-1164 kg/m^3 density range were
+/// read from a third-party implementation of ISO 91-1; D1250's own temperature limits for
+/// Table 54D were not confirmed, so the D341 line's window
+/// ([`WALTHER_TEMPERATURE_RANGE_C`]) is used.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Density {
+    rho15_kg_m3: f64,
+    expansion15_per_k: f64,
+}
+
+impl Density {
+    /// Density at 15 C `rho15_kg_m3` with the Table 54D expansion coefficient.
+    pub fn d1250_table_54d(rho15_kg_m3: f64) -> Result<Self, DatasheetError> {
+        check_positive("rho15_kg_m3", rho15_kg_m3)?;
+        let (lo, hi) = D1250_TABLE_54D_RHO15_KG_M3;
+        if !(lo..=hi).contains(&rho15_kg_m3) {
+            return Err(DatasheetError::Rho15OutsideTable54D {
+                rho15_kg_m3,
+                lo,
+                hi,
+            });
+        }
+        let expansion15_per_k =
+            D1250_TABLE_54D_K0 / (rho15_kg_m3 * rho15_kg_m3) + D1250_TABLE_54D_K1 / rho15_kg_m3;
+        Ok(Density {
+            rho15_kg_m3,
+            expansion15_per_k,
+        })
+    }
+
+    /// Density at 15 C `rho15_kg_m3` with a given expansion coefficient at 15 C.
+    pub fn with_expansion(
+        rho15_kg_m3: f64,
+        expansion15_per_k: f64,
+    ) -> Result<Self, DatasheetError> {
+        check_positive("rho15_kg_m3", rho15_kg_m3)?;
+        check_positive("expansion15_per_k", expansion15_per_k)?;
+        Ok(Density {
+            rho15_kg_m3,
+            expansion15_per_k,
+        })
+    }
+
+    /// Density at 15 C, kg/m^3.
+    pub fn rho15_kg_m3(&self) -> f64 {
+        self.rho15_kg_m3
+    }
+
+    /// Expansion coefficient at 15 C, 1/K.
+    pub fn expansion15_per_k(&self) -> f64 {
+        self.expansion15_per_k
+    }
+
+    /// Density at `temperature_c`, kg/m^3.
+    pub fn rho_kg_m3(&self, temperature_c: f64) -> Result<f64, DatasheetError> {
+        let (lo_c, hi_c) = WALTHER_TEMPERATURE_RANGE_C;
+        if !(lo_c..=hi_c).contains(&temperature_c) {
+            return Err(DatasheetError::TemperatureOutOfRange {
+                temperature_c,
+                lo_c,
+                hi_c,
+            });
+        }
+        let a_dt = self.expansion15_per_k * (temperature_c - 15.0);
+        Ok(self.rho15_kg_m3 * (-a_dt * (1.0 + 0.8 * a_dt)).exp())
+    }
+}
+
+/// A lubricant's datasheet, as a case file gives it. The 40 C viscosity comes from
+/// `nu40_mm2_s` or `iso_vg`, the 100 C one from `nu100_mm2_s` or `viscosity_index`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Datasheet {
+    /// Kinematic viscosity at 40 C (ASTM D445), mm^2/s.
+    pub nu40_mm2_s: Option<f64>,
+    /// ISO 3448 grade: the 40 C viscosity is its midpoint.
+    pub iso_vg: Option<u32>,
+    /// Kinematic viscosity at 100 C (ASTM D445), mm^2/s.
+    pub nu100_mm2_s: Option<f64>,
+    /// Viscosity index (ASTM D2270): the 100 C viscosity follows from it.
+    pub viscosity_index: Option<f64>,
+    /// Density at 15 C, kg/m^3.
+    pub rho15_kg_m3: f64,
+    /// Thermal expansion coefficient at 15 C, 1/K; ASTM D1250 Table 54D's when absent.
+    pub expansion15_per_k: Option<f64>,
+    /// Base-oil type.
+    pub base_oil: BaseOil,
+}
+
+impl Datasheet {
+    /// A short description for tables and listings (no commas, so a CSV cell needs no
+    /// quotes), e.g. `ISO VG 68 VI 97 mineral`.
+    pub fn label(&self) -> String {
+        let g = |x: f64| format!("{:.4e}", x).parse::<f64>().unwrap_or(x);
+        let nu40 = match (self.iso_vg, self.nu40_mm2_s) {
+            (Some(vg), _) => format!("ISO VG {vg}"),
+            (None, Some(nu)) => format!("nu40 {} mm^2/s", g(nu)),
+            (None, None) => "nu40 ?".into(),
+        };
+        let nu100 = match (self.viscosity_index, self.nu100_mm2_s) {
+            (Some(vi), _) => format!("VI {}", g(vi)),
+            (None, Some(nu)) => format!("nu100 {} mm^2/s", g(nu)),
+            (None, None) => "nu100 ?".into(),
+        };
+        let oil = match self.base_oil {
+            BaseOil::Mineral => "mineral",
+            BaseOil::Polyalphaolefin => "PAO",
+            BaseOil::Polyglycol => "PAG",
+        };
+        format!("{nu40} {nu100} {oil}")
+    }
+
+    /// Checks the datasheet and derives the lubricant's laws.
+    pub fn resolve(&self) -> Result<DatasheetLubricant, DatasheetError> {
+        let nu40_mm2_s = match (self.nu40_mm2_s, self.iso_vg) {
+            (Some(nu), None) => nu,
+            (None, Some(grade)) => IsoVg::new(grade)?.nu40_mm2_s(),
+            (Some(_), Some(_)) => {
+                return Err(DatasheetError::Conflicting {
+                    field: "nu40_mm2_s",
+                    other: "iso_vg",
+                })
+            }
+            (None, None) => {
+                return Err(DatasheetError::Missing {
+                    field: "nu40_mm2_s",
+                    alternative: "iso_vg",
+                })
+            }
+        };
+        let (nu100_mm2_s, vi) = match (self.nu100_mm2_s, self.viscosity_index) {
+            (Some(nu100), None) => match viscosity_index(nu40_mm2_s, nu100) {
+                Ok(vi) => (nu100, Some(vi)),
+                // A 100 C viscosity below 2 mm^2/s has no VI, but still makes a D341 line.
+                Err(ViscosityIndexError::Nu100BelowD2270 { .. }) => (nu100, None),
+                Err(e) => return Err(e.into()),
+            },
+            (None, Some(vi)) => (nu100_from_viscosity_index(nu40_mm2_s, vi)?, Some(vi)),
+            (Some(_), Some(_)) => {
+                return Err(DatasheetError::Conflicting {
+                    field: "nu100_mm2_s",
+                    other: "viscosity_index",
+                })
+            }
+            (None, None) => {
+                return Err(DatasheetError::Missing {
+                    field: "nu100_mm2_s",
+                    alternative: "viscosity_index",
+                })
+            }
+        };
+        let walther = WaltherLine::through(40.0, nu40_mm2_s, 100.0, nu100_mm2_s)?;
+        let density = match self.expansion15_per_k {
+            Some(a15) => Density::with_expansion(self.rho15_kg_m3, a15)?,
+            None => Density::d1250_table_54d(self.rho15_kg_m3)?,
+        };
+        Ok(DatasheetLubricant {
+            nu40_mm2_s,
+            nu100_mm2_s,
+            viscosity_index: vi,
+            walther,
+            density,
+            base_oil: self.base_oil,
+        })
+    }
+}
+
+/// A lubricant derived from its datasheet: viscosity, density and pressure-viscosity
+/// coefficient at any temperature in the laws' range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DatasheetLubricant {
+    nu40_mm2_s: f64,
+    nu100_mm2_s: f64,
+    viscosity_index: Option<f64>,
+    walther: WaltherLine,
+    density: Density,
+    base_oil: BaseOil,
+}
+
+impl DatasheetLubricant {
+    /// Kinematic viscosity at 40 C, mm^2/s.
+    pub fn nu40_mm2_s(&self) -> f64 {
+        self.nu40_mm2_s
+    }
+
+    /// Kinematic viscosity at 100 C, mm^2/s.
+    pub fn nu100_mm2_s(&self) -> f64 {
+        self.nu100_mm2_s
+    }
+
+    /// Viscosity index (unrounded); `None` when the 100 C viscosity is below 2 mm^2/s.
+    pub fn viscosity_index(&self) -> Option<f64> {
+        self.viscosity_index
+    }
+
+    /// The ASTM D341 line.
+    pub fn walther(&self) -> &WaltherLine {
+        &self.walther
+    }
+
+    /// The density law.
+    pub fn density(&self) -> &Density {
+        &self.density
+    }
+
+    /// Base-oil type.
+    pub fn base_oil(&self) -> BaseOil {
+        self.base_oil
+    }
+
+    /// Kinematic viscosity at `temperature_c`, mm^2/s (ASTM D341).
+    pub fn nu_mm2_s(&self, temperature_c: f64) -> Result<f64, DatasheetError> {
+        Ok(self.walther.nu_mm2_s(temperature_c)?)
+    }
+
+    /// Density at `temperature_c`, kg/m^3.
+    pub fn rho_kg_m3(&self, temperature_c: f64) -> Result<f64, DatasheetError> {
+        self.density.rho_kg_m3(temperature_c)
+    }
+
+    /// Dynamic viscosity at `temperature_c`, `eta = nu rho`, Pa s.
+    pub fn eta_pa_s(&self, temperature_c: f64) -> Result<f64, DatasheetError> {
+        Ok(self.nu_mm2_s(temperature_c)? * 1e-6 * self.rho_kg_m3(temperature_c)?)
+    }
+
+    /// Pressure-viscosity coefficient at `temperature_c` with its band (AGMA 925).
+    pub fn alpha(&self, temperature_c: f64) -> Result<PressureViscosityEstimate, DatasheetError> {
+        Ok(alpha_agma925(self.base_oil, self.eta_pa_s(temperature_c)?)?)
+    }
+
+    /// `alpha` (central value) and `eta0` at `temperature_c`, the same state Table 1 gives.
+    pub fn state(&self, temperature_c: f64) -> Result<LubricantState, DatasheetError> {
+        Ok(LubricantState {
+            alpha_per_pa: self.alpha(temperature_c)?.alpha_per_pa,
+            eta0_pa_s: self.eta_pa_s(temperature_c)?,
+        })
+    }
+}
+
+/// A datasheet lubricant at one temperature: the state the solver takes (`alpha`, `eta0`) and
+/// what a report shows beside it (the viscosity and density it came from, and the
+/// correlation's estimate of `alpha` with its band when the user gave none).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DatasheetState {
+    /// Temperature, C.
+    pub temperature_c: f64,
+    /// Kinematic viscosity at the temperature (ASTM D341), mm^2/s.
+    pub nu_mm2_s: f64,
+    /// Density at the temperature (ASTM D1250), kg/m^3.
+    pub rho_kg_m3: f64,
+    /// `alpha` (given, or the correlation's central value) and `eta0 = nu rho`.
+    pub state: LubricantState,
+    /// The correlation's estimate and band; `None` when `alpha` was given.
+    pub correlated: Option<PressureViscosityEstimate>,
+}
+
+impl DatasheetLubricant {
+    /// The lubricant at `temperature_c`: `eta0 = nu rho` (D341, D1250) and `alpha`, the
+    /// user's `alpha_per_gpa` when given (it replaces the correlation), else AGMA 925's.
+    pub fn at(
+        &self,
+        temperature_c: f64,
+        alpha_per_gpa: Option<f64>,
+    ) -> Result<DatasheetState, DatasheetError> {
+        let nu_mm2_s = self.nu_mm2_s(temperature_c)?;
+        let rho_kg_m3 = self.rho_kg_m3(temperature_c)?;
+        // The same product as [`DatasheetLubricant::eta_pa_s`], so both give the same bits.
+        let eta0_pa_s = nu_mm2_s * 1e-6 * rho_kg_m3;
+        let (alpha_per_pa, correlated) = match alpha_per_gpa {
+            Some(a) => {
+                check_positive("alpha_per_gpa", a)?;
+                (a * 1e-9, None)
+            }
+            None => {
+                let e = alpha_agma925(self.base_oil, eta0_pa_s)?;
+                (e.alpha_per_pa, Some(e))
+            }
+        };
+        Ok(DatasheetState {
+            temperature_c,
+            nu_mm2_s,
+            rho_kg_m3,
+            state: LubricantState {
+                alpha_per_pa,
+                eta0_pa_s,
+            },
+            correlated,
+        })
+    }
+}
+
+fn check_positive(field: &'static str, value: f64) -> Result<(), DatasheetError> {
+    if !(value > 0.0 && value.is_finite()) {
+        return Err(DatasheetError::NotPositive { field, value });
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn vg46_vi100() -> Datasheet {
+        Datasheet {
+            nu40_mm2_s: None,
+            iso_vg: Some(46),
+            nu100_mm2_s: None,
+            viscosity_index: Some(100.0),
+            rho15_kg_m3: 870.0,
+            expansion15_per_k: None,
+            base_oil: BaseOil::Mineral,
+        }
+    }
+
+    #[test]
+    fn iso_vg_grades() {
+        let g = IsoVg::new(46).unwrap();
+        assert_eq!(g.grade(), 46);
+        let (lo, hi) = g.nu40_limits_mm2_s();
+        // ISO 3448: VG 46 spans 41.4 to 50.6 mm^2/s; VG 2 has midpoint 2.2 and 1.98 to 2.42.
+        assert!((lo - 41.4).abs() < 1e-9 && (hi - 50.6).abs() < 1e-9);
+        let (lo, hi) = IsoVg::new(2).unwrap().nu40_limits_mm2_s();
+        assert!((lo - 1.98).abs() < 1e-9 && (hi - 2.42).abs() < 1e-9);
+        assert!(ISO_3448_GRADES.windows(2).all(|w| w[1].1 > w[0].1));
+    }
+
+    #[test]
+    fn vg46_vi100_mineral_oil() {
+        let lub = vg46_vi100().resolve().unwrap();
+        // A VI-100 oil has U = H, so Y solves H(Y) = 46: between the D2270 rows 6.7
+        // (H = 45.33) and 6.8 (H = 46.44), Y = 6.7 + 0.1 x 0.67 / 1.11 = 6.7604.
+        assert!(
+            (lub.nu100_mm2_s() - 6.7604).abs() < 1e-4,
+            "{}",
+            lub.nu100_mm2_s()
+        );
+        // The line passes through its data (D341 Eq. 3 inverts Eq. 2 to round-off here).
+        assert!((lub.nu_mm2_s(40.0).unwrap() / 46.0 - 1.0).abs() < 1e-9);
+        assert!((lub.nu_mm2_s(100.0).unwrap() / lub.nu100_mm2_s() - 1.0).abs() < 1e-9);
+        assert!((lub.viscosity_index().unwrap() - 100.0).abs() < 1e-12);
+        // D1250 54D at 870 kg/m^3: a15 = 0.6278 / 870 = 7.2161e-4 1/K; at 40 C,
+        // 870 exp(-0.018040 x 1.014432) = 854.223 kg/m^3 (hand calculation, 6 digits).
+        let d = lub.density();
+        assert!((d.expansion15_per_k() - 7.2161e-4).abs() < 1e-8);
+        assert!((lub.rho_kg_m3(40.0).unwrap() - 854.223).abs() < 1e-3);
+        assert!((lub.rho_kg_m3(15.0).unwrap() - 870.0).abs() < 1e-12);
+        // eta = nu rho: 46 mm^2/s x 854.223 kg/m^3 = 39.294 mPa s; 3e-8 Pa s is the
+        // 5e-4 kg/m^3 rounding of the hand value times 46e-6 m^2/s.
+        let eta = lub.eta_pa_s(40.0).unwrap();
+        assert!((eta - 46e-6 * 854.223).abs() < 3e-8, "{eta}");
+        // alpha from AGMA 925 at that eta; state() carries its central value.
+        let a = lub.alpha(40.0).unwrap();
+        let s = lub.state(40.0).unwrap();
+        assert!((s.alpha_per_pa - a.alpha_per_pa).abs() < 1e-24);
+        assert!((s.eta0_pa_s - eta).abs() < 1e-15);
+        assert!(a.low_per_pa < a.high_per_pa);
+    }
+
+    #[test]
+    fn measured_viscosities_and_a_given_expansion() {
+        // The D2270 Procedure B example as a datasheet: VI 156 comes back.
+        let sheet = Datasheet {
+            nu40_mm2_s: Some(22.83),
+            iso_vg: None,
+            nu100_mm2_s: Some(5.05),
+            viscosity_index: None,
+            rho15_kg_m3: 830.0,
+            expansion15_per_k: Some(7.0e-4),
+            base_oil: BaseOil::Polyalphaolefin,
+        };
+        let lub = sheet.resolve().unwrap();
+        assert!((lub.viscosity_index().unwrap().round() - 156.0).abs() < 1e-12);
+        assert!((lub.density().expansion15_per_k() - 7.0e-4).abs() < 1e-18);
+        // A 100 C viscosity below 2 mm^2/s has no VI but a D341 line.
+        let thin = Datasheet {
+            nu40_mm2_s: Some(5.0),
+            nu100_mm2_s: Some(1.8),
+            ..sheet
+        };
+        let lub = thin.resolve().unwrap();
+        assert!(lub.viscosity_index().is_none());
+        assert!(lub.nu_mm2_s(70.0).unwrap() < 5.0);
+    }
+
+    #[test]
+    fn reads_from_toml() {
+        let text = "iso_vg = 46\nviscosity_index = 100\nrho15_kg_m3 = 870\nbase_oil = 'mineral'\n";
+        let sheet: Datasheet = toml::from_str(text).unwrap();
+        assert_eq!(sheet, vg46_vi100());
+        let e = toml::from_str::<Datasheet>("iso_vg = 46\nvi = 100\n").unwrap_err();
+        assert!(e.to_string().contains("unknown field"), "{e}");
+    }
+
+    #[test]
+    fn every_error_is_reachable() {
+        let base = vg46_vi100();
+        let err = |s: Datasheet| s.resolve().unwrap_err();
+        let e = err(Datasheet {
+            iso_vg: None,
+            ..base.clone()
+        });
+        assert!(
+            matches!(
+                e,
+                DatasheetError::Missing {
+                    field: "nu40_mm2_s",
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        let e = err(Datasheet {
+            viscosity_index: None,
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::Missing {
+                field: "nu100_mm2_s",
+                ..
+            }
+        ));
+        let e = err(Datasheet {
+            nu40_mm2_s: Some(46.0),
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::Conflicting {
+                other: "iso_vg",
+                ..
+            }
+        ));
+        let e = err(Datasheet {
+            nu100_mm2_s: Some(6.8),
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::Conflicting {
+                other: "viscosity_index",
+                ..
+            }
+        ));
+        let e = err(Datasheet {
+            iso_vg: Some(50),
+            ..base.clone()
+        });
+        assert!(matches!(e, DatasheetError::UnknownIsoVg { grade: 50, .. }));
+        assert!(e.to_string().contains("46"), "{e}");
+        let e = err(Datasheet {
+            rho15_kg_m3: -870.0,
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::NotPositive {
+                field: "rho15_kg_m3",
+                ..
+            }
+        ));
+        let e = err(Datasheet {
+            expansion15_per_k: Some(0.0),
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::NotPositive {
+                field: "expansion15_per_k",
+                ..
+            }
+        ));
+        // 5P4E's density (about 1200 kg/m^3) is beyond Table 54D.
+        let e = err(Datasheet {
+            rho15_kg_m3: 1200.0,
+            ..base.clone()
+        });
+        assert!(matches!(e, DatasheetError::Rho15OutsideTable54D { .. }));
+        // Inconsistent viscosities: nu100 >= nu40 (D2270's check, names both fields).
+        let e = err(Datasheet {
+            iso_vg: None,
+            nu40_mm2_s: Some(5.0),
+            viscosity_index: None,
+            nu100_mm2_s: Some(5.0),
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::ViscosityIndex(ViscosityIndexError::Nu100NotBelowNu40 { .. })
+        ));
+        assert!(e.to_string().contains("nu100_mm2_s"), "{e}");
+        // A VI no VG 10 oil can have.
+        let e = err(Datasheet {
+            iso_vg: Some(10),
+            viscosity_index: Some(-200.0),
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::ViscosityIndex(ViscosityIndexError::ViscosityIndexOutOfRange { .. })
+        ));
+        // A measured viscosity below the D341 floor.
+        let e = err(Datasheet {
+            iso_vg: None,
+            nu40_mm2_s: Some(1.0),
+            viscosity_index: None,
+            nu100_mm2_s: Some(0.1),
+            ..base.clone()
+        });
+        assert!(matches!(
+            e,
+            DatasheetError::Walther(WaltherError::ViscosityBelowRange { .. })
+        ));
+        // Temperatures outside the laws' range, viscosity first, density on its own.
+        let lub = base.resolve().unwrap();
+        assert!(matches!(
+            lub.eta_pa_s(200.0),
+            Err(DatasheetError::Walther(
+                WaltherError::TemperatureOutOfRange { .. }
+            ))
+        ));
+        assert!(matches!(
+            lub.rho_kg_m3(-40.0),
+            Err(DatasheetError::TemperatureOutOfRange { .. })
+        ));
+        // eta is positive by construction, so the correlation's error only arrives by
+        // conversion; its message is the correlation's own.
+        let inner = PressureViscosityError::NotPositive {
+            field: "eta_pa_s",
+            value: 0.0,
+        };
+        let e = DatasheetError::from(inner.clone());
+        assert_eq!(e.to_string(), inner.to_string());
+    }
+}
