@@ -34,9 +34,9 @@ pub struct Provenance {
     pub line_solver_revision: Option<String>,
     /// Grid level of the point contacts.
     pub level: Option<u32>,
-    /// Solver parameters, as the solver's `Params` print (the domain of each point contact
-    /// is the one its problem calls for, `Params::for_problem`, whatever the domain printed
-    /// here).
+    /// Solver parameters, as the solver's `Params` print: every distinct set the rule
+    /// (`Params::for_problem`) gives the target's point contacts (their domains differ with
+    /// the load), then the line contacts'.
     pub params: Vec<String>,
     /// Who solved the cases: one entry per build and host, with its count of cases.
     pub computed_by: Vec<Computation>,

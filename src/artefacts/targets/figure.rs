@@ -116,7 +116,14 @@ fn provenance(stem: &str, built: &Built, runs: &[CaseRun], line: Option<&[LineRu
     p.solver_revision = Some(SOLVER_REVISION.to_string());
     p.level = built.level;
     if let Some(level) = built.level {
-        p.params.push(format!("{:?}", Params::at_level(level)));
+        // The rule's parameters differ from case to case (the domain): each distinct set once,
+        // in the order of the rows that first use it.
+        for run in runs {
+            let params = format!("{:?}", Params::for_problem(&run.problem, level));
+            if !p.params.contains(&params) {
+                p.params.push(params);
+            }
+        }
     }
     p.add_rows(
         &format!("{stem}.csv"),
