@@ -40,7 +40,7 @@ pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-14";
+pub const SOLVER_REVISION: &str = "point-13";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -120,10 +120,9 @@ pub struct Params {
     /// Convergence: relative force-balance error. Default 1e-4.
     pub load_tolerance: f64,
     /// Convergence, alternatively: the estimated relative algebraic error of the central
-    /// film, the minimum film and the sliding and rolling friction ([`stopping`]), after a
-    /// cycle, or after a Newton-Krylov step whose residual is within a decade of
-    /// `tolerance`. Default 5e-4, a hundredth of level 7's discretisation error in the film;
-    /// 0 stops on the residual or the pressure change alone.
+    /// film, the minimum film and the sliding and rolling friction ([`stopping`]). Default 5e-4, a
+    /// hundredth of level 7's discretisation error in the film; 0 stops on the residual
+    /// or the pressure change alone.
     pub output_tolerance: f64,
     /// Most Newton steps on each level of the Newton-Krylov finish ([`newton`]) that takes
     /// over when the cycles stall, diverge or run out; 0 turns the finish off. Default 30:
@@ -535,27 +534,9 @@ fn newton_solve(
 ) -> newton::Outcome {
     let model = mg.model;
     let mut h0 = mg.h0;
-    let rolling_scale = mg.rolling_scale;
     let level = &mut mg.levels[k];
     let mut before = level.p.clone();
     let mut steps = 0;
-    // The outputs and the residual of the state each step starts from, for the outputs'
-    // stopping rule ([`stopping::newton_step_error`]).
-    let outputs_of = |level: &level::Level| -> [f64; 4] {
-        let film = friction::film(level, 1.0);
-        let mu = friction::friction(level, &model, rolling_scale, params.friction_region);
-        [
-            film.h_central,
-            film.h_min,
-            mu.sliding,
-            mu.rolling.unwrap_or(0.0),
-        ]
-    };
-    level.refresh(h0, &model);
-    // The start is not a step's result (damping 0): the first step's change of the outputs
-    // includes what changed with the problem (a warm start's rolling friction scales with
-    // its Eyring stress), so at least two steps are taken before the rule applies.
-    let mut last = (outputs_of(level), level.residual_norm().0, 0.0);
     let outcome = newton::iterate(
         level,
         &model,
@@ -584,15 +565,6 @@ fn newton_solve(
                 worst_at: step.worst_at,
             });
             before.copy_from_slice(&level.p);
-            let now = (outputs_of(level), step.residual, step.damping);
-            let settled = stopping::newton_settled(
-                (&last.0, last.1, last.2),
-                (&now.0, now.1, now.2),
-                params.tolerance,
-                params.output_tolerance,
-            );
-            last = now;
-            settled
         },
     );
     mg.h0 = h0;

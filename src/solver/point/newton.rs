@@ -90,8 +90,6 @@ pub(crate) struct Step {
     pub load_error: f64,
     /// GMRES iterations of the step.
     pub krylov_iterations: usize,
-    /// The line search's damping of the step: 1 for the full step.
-    pub damping: f64,
 }
 
 /// When [`iterate`] stops, and how it solves its linear systems.
@@ -129,14 +127,14 @@ fn forcing(previous: f64, norm: f64, norm_before: f64) -> f64 {
 }
 
 /// Newton steps on `level` (its own equations: the top of the hierarchy) from its current
-/// pressure and `h0` until both tolerances are met, or `report`, which hears of every step,
-/// says the outputs have settled and the force balance holds; within `limits`.
+/// pressure and `h0` until both tolerances are met, within `limits`. `report` hears of
+/// every step.
 pub(crate) fn iterate(
     level: &mut Level,
     model: &Model,
     h0: &mut f64,
     limits: &Limits,
-    report: &mut dyn FnMut(&Level, &Step) -> bool,
+    report: &mut dyn FnMut(&Level, &Step),
 ) -> Outcome {
     let g = level.grid;
     // The row scales are those of this state: a level just interpolated (the next level of
@@ -270,20 +268,19 @@ pub(crate) fn iterate(
         ev = evaluate(level, model, *h0, &scale);
         let (residual, worst_at) = level.residual_norm();
         let load_error = ev.load.abs();
-        let settled = report(
+        report(
             level,
             &Step {
                 residual,
                 worst_at,
                 load_error,
                 krylov_iterations: krylov.iterations,
-                damping: omega,
             },
         );
         if !residual.is_finite() {
             return outcome;
         }
-        if (residual < limits.tolerance || settled) && load_error < limits.load_tolerance {
+        if residual < limits.tolerance && load_error < limits.load_tolerance {
             outcome.converged = true;
             return outcome;
         }
@@ -502,8 +499,8 @@ mod tests {
             krylov_iterations: 60,
         };
         let (mut a, mut b) = (h0, h0);
-        iterate(&mut stale, &model, &mut a, &limits, &mut |_, _| false);
-        iterate(&mut current, &model, &mut b, &limits, &mut |_, _| false);
+        iterate(&mut stale, &model, &mut a, &limits, &mut |_, _| {});
+        iterate(&mut current, &model, &mut b, &limits, &mut |_, _| {});
         assert_eq!((stale.p, a), (current.p, b));
     }
 

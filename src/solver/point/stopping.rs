@@ -13,10 +13,6 @@
 //! ([`residual_falls`]); otherwise, where the Newton-Krylov finish is allowed, it takes over
 //! from the cycles' best state.
 //!
-//! The Newton-Krylov finish stops at a mean residual of 1e-6, or a decade above it where two
-//! full steps in a row leave the outputs' estimated error below the same bound
-//! ([`newton_settled`]).
-//!
 //! The bound [`OUTPUT_TOLERANCE`] is set by what the level can resolve. Level 7's own
 //! discretisation error, from levels 7 and 8 by Richardson extrapolation, is about 6 % in
 //! the central film and 0.13 % in `mu-bar` on the Table 4 case (the paper's own levels 7
@@ -134,69 +130,6 @@ fn tail(d: [f64; 3]) -> f64 {
     last.abs() * rho / (1.0 - rho)
 }
 
-/// Multiple of the residual tolerance below which settled outputs end a Newton-Krylov solve
-/// ([`newton_settled`]).
-pub(crate) const NEWTON_SETTLED_RESIDUAL: f64 = 10.0;
-
-/// Whether the Newton-Krylov step that took the outputs (central and minimum film, sliding
-/// and rolling `mu-bar`) from `before` to `after`, each with its mean residual and the
-/// damping of the step that reached it, may end the solve although the residual is above
-/// `tolerance`: both steps full, the residual below [`NEWTON_SETTLED_RESIDUAL`] times
-/// `tolerance`, and the outputs' estimated algebraic error ([`newton_step_error`]) below
-/// `output_tolerance` (0: never).
-///
-/// The step before must be full too (the start counts as damped), and the residual small,
-/// because the semi-smooth
-/// iteration changes its active set on the way: a damped step's small change says nothing
-/// of the distance left, and far from the solution one step can cut the residual a
-/// hundredfold while the outputs still move by per cent (the traction fluid at 40 C, 1 GPa,
-/// 7 m/s, level 7: after a half step, residual 1.2e-3, estimate 2.8e-4, error 1.6e-2).
-/// Below ten times the tolerance the rule spends no step on the last decade: measured over
-/// six Figs. 4-6 families at level 7 (members from their base, bases cold), the steps it
-/// ends leave every output within 2.6e-4 of a solve converged to a residual of 1e-11, and
-/// save the step that would take a residual of 2-9e-6 to 1e-8 or below.
-pub(crate) fn newton_settled(
-    before: (&[f64; 4], f64, f64),
-    after: (&[f64; 4], f64, f64),
-    tolerance: f64,
-    output_tolerance: f64,
-) -> bool {
-    let ((b, b_residual, b_damping), (a, a_residual, a_damping)) = (before, after);
-    output_tolerance > 0.0
-        && b_damping == 1.0
-        && a_damping == 1.0
-        && a_residual < NEWTON_SETTLED_RESIDUAL * tolerance
-        && newton_step_error(b, a, a_residual / b_residual) < output_tolerance
-}
-
-/// The estimated relative algebraic error of the outputs after a Newton-Krylov step that
-/// took them from `before` to `after` and multiplied the mean residual by `residual_ratio`
-/// (largest over the outputs; infinite where the residual did not fall).
-///
-/// Near the solution the error of an output falls with the residual, so the step's factor
-/// `rho` is the residual's and the error left is the geometric tail of the step's change,
-/// `|d| rho / (1 - rho)`, as for the cycles; a Newton step converges faster than its tail
-/// implies (quadratically, or at the forcing term's rate), so near the solution the estimate
-/// errs on the safe side ([`newton_settled`] says where it is taken).
-pub(crate) fn newton_step_error(before: &[f64; 4], after: &[f64; 4], residual_ratio: f64) -> f64 {
-    if residual_ratio.is_nan() || residual_ratio >= 1.0 {
-        return f64::INFINITY;
-    }
-    let rho = residual_ratio.min(RHO_MAX);
-    before
-        .iter()
-        .zip(after)
-        .map(|(b, a)| {
-            let d = (a - b).abs();
-            if d == 0.0 {
-                0.0
-            } else {
-                d * rho / (1.0 - rho) / a.abs()
-            }
-        })
-        .fold(0.0, f64::max)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -255,45 +188,6 @@ mod tests {
             !residual_falls(&[1e-3, 1e-4]),
             "two cycles are too few to tell"
         );
-    }
-
-    #[test]
-    fn settled_newton_outputs_end_the_solve_only_near_the_solution() {
-        // A member of the 5P4E family at 40 C, 3 GPa, 12 m/s (level 7, S 0.1 %, tau0 8 MPa,
-        // from its base): the outputs after its third and fourth Newton steps (residuals
-        // 1.75e-4 and 2.71e-6); the fourth leaves them within 4.6e-5 of the solution (the
-        // rolling friction's 2.518658e-1 after two more steps to a residual of 6e-13).
-        let third = [3.340994e-1, 2.205001e-1, 6.268554e1, 2.483190e-1];
-        let fourth = [3.342878e-1, 2.203664e-1, 6.268691e1, 2.518542e-1];
-        let (tolerance, output_tolerance) = (1e-6, OUTPUT_TOLERANCE);
-        let step = |b_damping: f64, a_residual: f64| {
-            newton_settled(
-                (&third, 1.75e-4, b_damping),
-                (&fourth, a_residual, 1.0),
-                tolerance,
-                output_tolerance,
-            )
-        };
-        // Residual ratio 0.0155: the estimate is the rolling friction's change (1.4 %) times
-        // 0.0157, 2.2e-4, against a true error of 4.6e-5.
-        let estimate = newton_step_error(&third, &fourth, 2.71e-6 / 1.75e-4);
-        assert!(estimate > 2.1e-4 && estimate < 2.3e-4, "{estimate}");
-        assert!(step(1.0, 2.71e-6));
-        // After a damped step, or with the residual ten times the tolerance or more, or
-        // where the residual rose, the rule does not apply.
-        assert!(!step(0.5, 2.71e-6));
-        assert!(!step(1.0, 1.0e-5));
-        assert!(newton_step_error(&third, &fourth, 1.2).is_infinite());
-        // The rule off.
-        let off = newton_settled(
-            (&third, 1.75e-4, 1.0),
-            (&fourth, 2.71e-6, 1.0),
-            tolerance,
-            0.0,
-        );
-        assert!(!off);
-        // Outputs that did not move at all are settled whatever the residual ratio below 1.
-        assert_eq!(newton_step_error(&fourth, &fourth, 0.9), 0.0);
     }
 
     #[test]
