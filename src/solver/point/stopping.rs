@@ -11,7 +11,9 @@
 //!
 //! Settled outputs end the cycles only while the residual still falls
 //! ([`residual_falls`]); otherwise, where the Newton-Krylov finish is allowed, it takes over
-//! from the cycles' best state.
+//! from the cycles' best state. A residual below its tolerance does not end them while the
+//! outputs have not settled: a heavy contact's side-lobe minimum film can still be 2 % off
+//! there.
 //!
 //! The bound [`OUTPUT_TOLERANCE`] is set by what the level can resolve. Level 7's own
 //! discretisation error, from levels 7 and 8 by Richardson extrapolation, is about 6 % in
