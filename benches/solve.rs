@@ -10,14 +10,14 @@
 //! minute of single solves).
 
 use criterion::{BenchmarkId, Criterion};
-use repro::artefacts::accuracy::{study_cases, Contact};
-use repro::artefacts::target::Context;
-use repro::artefacts::targets::build;
+use repro::paper::accuracy::{study_cases, Contact};
+use repro::paper::build;
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::density::DensityLaw;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::physics::viscosity::ViscosityLaw;
+use repro::pipeline::context::Context;
 use repro::solver::point::{solve, Params};
 use std::time::Duration;
 
@@ -125,7 +125,7 @@ fn effects(c: &mut Criterion) {
 fn target(c: &mut Criterion) {
     let level = if full() { 5 } else { 4 };
     let out = std::env::temp_dir().join(format!("repro-bench-{}", std::process::id()));
-    let progress = |_: &str, _: repro::artefacts::run::RunProgress| {};
+    let progress = |_: &str, _: repro::pipeline::run::RunProgress| {};
     let warn = |_: String| {};
     let ctx = Context {
         out: out.clone(),
@@ -183,7 +183,7 @@ fn hard_case(c: &mut Criterion) {
 /// parameters: the figures' defaults) and the Newtonian M = 20, L = 10 rolling contact
 /// (Barus, incompressible: the case of the Venner-Lubrecht FMG code) at levels 7 and 8.
 fn speed(c: &mut Criterion) {
-    let table4 = repro::artefacts::table4::Table4Case::shipped()
+    let table4 = repro::paper::table4::Table4Case::shipped()
         .expect("cases/table4.toml")
         .problem()
         .expect("the Table 4 case resolves");

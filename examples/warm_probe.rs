@@ -7,11 +7,11 @@
 //! base at S-bar 0.1; Barus, incompressible, Eyring);
 //! `TIGHT` 1 solves the cold members with the output rule off (to a mean residual of 1e-6,
 //! or by Newton-Krylov), the reference a warm solve is judged against.
-use repro::artefacts::base::base_of;
 use repro::physics::case::{
     Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
 };
 use repro::physics::lubricant::LubricantTable;
+use repro::pipeline::base::base_of;
 use repro::solver::point::{self, Params, Start};
 use std::time::Instant;
 

@@ -2,10 +2,10 @@
 //! Eyring stress is caught, and neither the thread count nor a rerun changes a result.
 
 use crate::support::repro;
-use repro::artefacts::run::{run_cases, CaseRun, Store};
-use repro::artefacts::snapshot::compare;
-use repro::artefacts::sweep::Sweep;
-use repro::artefacts::targets::figure::runs_csv;
+use repro::paper::figures::runs_csv;
+use repro::pipeline::run::{run_cases, CaseRun, Store};
+use repro::pipeline::snapshot::compare;
+use repro::pipeline::sweep::Sweep;
 use std::path::PathBuf;
 
 fn scratch(name: &str) -> PathBuf {

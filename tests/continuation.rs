@@ -9,12 +9,12 @@
 //! or by Newton-Krylov), so the two differ by the warm solve's algebraic error alone. Levels
 //! 5 and 6 keep each solve under a few seconds; the paths are the same at every level.
 
-use repro::artefacts::base::base_of;
 use repro::physics::case::{
     Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
 };
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
+use repro::pipeline::base::base_of;
 use repro::solver::output::{Method, StartKind};
 use repro::solver::point::{self, Params, PointSolution, Start};
 

@@ -2,7 +2,7 @@
 //! Fig. 7, the point-contact trend in Rx/Ry, and `repro solve --line`.
 
 use crate::support::{repro, SOLVE_KEYS};
-use repro::artefacts::line_cases::table3_line_cases;
+use repro::paper::figures::line::table3_line_cases;
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
 use repro::physics::line_contact::LineProblem;
 use repro::physics::lubricant::LubricantTable;

@@ -2,9 +2,9 @@
 //! datasheet flags, the same oil through a study file, and errors that name the flag or field.
 
 use crate::support::{repro, with_flags};
-use repro::artefacts::sweep::Sweep;
 use repro::physics::case::{Problem, Spec};
 use repro::physics::lubricant::LubricantTable;
+use repro::pipeline::sweep::Sweep;
 use std::path::Path;
 
 /// docs/gear-oil-study.toml: an ISO VG 68, VI 97 mineral gear oil, 880 kg/m^3 at 15 C.

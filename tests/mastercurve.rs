@@ -2,10 +2,10 @@
 //! `figures/`: the flat-film oracle against the solvers' friction, and the refined formula's
 //! committed coefficients against a refit of the computed cases.
 
-use repro::artefacts::csv::reader;
-use repro::artefacts::refined::{
+use repro::paper::mastercurve::refined::{
     band95, cross_validated, fit, rms_rel, Features, Sample, REFINED, REFINED_BAND,
 };
+use repro::pipeline::csv::reader;
 use std::collections::HashMap;
 
 /// The rows of a committed figure CSV as maps from column to cell.

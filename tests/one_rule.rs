@@ -11,12 +11,12 @@
 //! print floats in shortest round-trip form, so any difference is a different path.
 
 use crate::support::{repro, repro_in};
-use repro::artefacts::accuracy::{pipeline_params, study_cases, Contact, Measured};
-use repro::artefacts::cache::{Cache, Lookup};
-use repro::artefacts::run::{point_jobs, Outcome, Record};
-use repro::artefacts::sweep::Sweep;
+use repro::paper::accuracy::{pipeline_params, study_cases, Contact, Measured};
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
+use repro::pipeline::cache::{Cache, Lookup};
+use repro::pipeline::run::{point_jobs, Outcome, Record};
+use repro::pipeline::sweep::Sweep;
 use std::path::{Path, PathBuf};
 
 const LEVEL: u32 = 5;

@@ -2,7 +2,7 @@
 //! and the hard cases of the paper's parameter range.
 
 use crate::support::appendix_problem;
-use repro::artefacts::table4::{self, Table4Case};
+use repro::paper::table4::{self, Table4Case};
 use repro::physics::case::{
     Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
 };

@@ -4,8 +4,8 @@
 //! different result; `repro slurm` writes the scripts of the same run.
 
 use crate::support::repro;
-use repro::artefacts::cache::{Cache, Stamp};
-use repro::artefacts::run::Outcome;
+use repro::pipeline::cache::{Cache, Stamp};
+use repro::pipeline::run::Outcome;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

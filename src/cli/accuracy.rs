@@ -1,11 +1,10 @@
-//! `repro accuracy`: the level study of [`repro::artefacts::accuracy`], its files and summary.
+//! `repro accuracy`: the level study of [`repro::paper::accuracy`], its files and summary.
 
 use super::args::AccuracyArgs;
 use super::config::check_level;
 use anyhow::{bail, Context as _, Result};
-use repro::artefacts::accuracy::{self, MU_TOLERANCE};
-use repro::artefacts::csv::write_atomic;
-use repro::artefacts::plot;
+use repro::paper::accuracy::{self, MU_TOLERANCE};
+use repro::pipeline::csv::write_atomic;
 
 /// Runs the study; false when a case converged at none of its levels.
 pub fn run(args: &AccuracyArgs) -> Result<bool> {
@@ -39,7 +38,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
         ("accuracy_levels.csv", accuracy::recommendations_csv(&recs)),
         (
             "accuracy.svg",
-            plot::accuracy::svg(&studies).map_err(anyhow::Error::msg)?,
+            accuracy::picture::svg(&studies).map_err(anyhow::Error::msg)?,
         ),
     ];
     for (name, text) in &files {

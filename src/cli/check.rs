@@ -4,9 +4,9 @@ use super::args::{CheckArgs, TargetArgs};
 use super::print::summary_line;
 use super::progress::in_context;
 use anyhow::{bail, Result};
-use repro::artefacts::report;
-use repro::artefacts::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
-use repro::artefacts::targets::{self, TARGETS};
+use repro::paper::{self as targets, TARGETS};
+use repro::pipeline::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
+use repro::report;
 
 /// Differences printed before the rest are only counted.
 const SHOWN: usize = 40;

@@ -6,9 +6,6 @@ use super::args::{
     ViscosityArg,
 };
 use anyhow::{anyhow, bail, Result};
-use repro::artefacts::cache::Cache;
-use repro::artefacts::run::RunProgress;
-use repro::artefacts::target::{check_writable, Context};
 use repro::physics::case::{
     Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
 };
@@ -19,6 +16,9 @@ use repro::physics::lubricant::{LubricantError, LubricantTable};
 use repro::physics::pressure_viscosity::BaseOil;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
 use repro::physics::viscosity::ViscosityLaw;
+use repro::pipeline::cache::Cache;
+use repro::pipeline::context::{check_writable, Context};
+use repro::pipeline::run::RunProgress;
 use repro::solver::grid::Domain;
 use repro::solver::{line, point};
 

@@ -7,7 +7,7 @@
 //! The lubricant is printed first, with where its `alpha` comes from. When that is a
 //! correlation (a datasheet without `--alpha`), every output that depends on `alpha` is
 //! printed with the range it takes over the correlation's band
-//! ([`repro::artefacts::prediction`]), and the refined formula's band holds that range and the
+//! ([`repro::paper::prediction`]), and the refined formula's band holds that range and the
 //! formula's own.
 
 use super::args::PredictArgs;
@@ -16,9 +16,8 @@ use super::print::{print_failure, rolling_text, solve_progress};
 use super::solve::point_report;
 use super::thermal::{self, ThermalReport};
 use anyhow::{bail, Result};
-use repro::artefacts::base::solve_case;
-use repro::artefacts::fit::FIT_TAU_C_MIN;
-use repro::artefacts::prediction::{Band, Prediction};
+use repro::paper::mastercurve::fit::FIT_TAU_C_MIN;
+use repro::paper::prediction::{Band, Prediction};
 use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Spec};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::thermal::ThermalError;
@@ -26,6 +25,7 @@ use repro::physics::traction::{
     characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
     ViscosityAtPh, ISOTHERMAL_SLIP_MAX,
 };
+use repro::pipeline::base::solve_case;
 use repro::solver::point::{Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;

@@ -1,9 +1,9 @@
 //! What the commands print, shared by them: a solve's JSON object, the rolling friction as
 //! text, a failed solve, the per-cycle progress of one solve and a target's summary line.
 
-use repro::artefacts::fit::{mastercurve, PAPER_C};
-use repro::artefacts::target::Built;
+use repro::paper::mastercurve::fit::{mastercurve, PAPER_C};
 use repro::physics::case::Physics;
+use repro::pipeline::context::Built;
 use repro::solver::output::{Film, Friction, Info, Progress, SolveError, Step};
 use serde_json::{json, Map, Value};
 

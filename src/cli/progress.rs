@@ -7,8 +7,8 @@ use super::args::TargetArgs;
 use super::config::context;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
-use repro::artefacts::run::RunProgress;
-use repro::artefacts::target::Context;
+use repro::pipeline::context::Context;
+use repro::pipeline::run::RunProgress;
 use std::io::IsTerminal;
 use std::sync::Mutex;
 

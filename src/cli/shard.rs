@@ -5,9 +5,9 @@
 use super::args::TargetArgs;
 use super::progress::in_context_writing;
 use anyhow::{anyhow, bail, Result};
-use repro::artefacts::run::{missing, missing_message, run_jobs, Job, Outcome, RunProgress};
-use repro::artefacts::shard::Shard;
-use repro::artefacts::target::Context;
+use repro::pipeline::context::Context;
+use repro::pipeline::run::{missing, missing_message, run_jobs, Job, Outcome, RunProgress};
+use repro::pipeline::shard::Shard;
 use std::time::Instant;
 
 /// The solves of a run, each with the target that needs it.

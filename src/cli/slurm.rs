@@ -4,9 +4,9 @@
 use super::args::{SlurmArgs, TargetArgs};
 use super::config::context;
 use anyhow::{anyhow, bail, Context as _, Result};
-use repro::artefacts::csv::write_atomic;
-use repro::artefacts::slurm::{sh_quote, SlurmPlan};
-use repro::artefacts::targets::{self, TARGETS};
+use repro::paper::{self as targets, TARGETS};
+use repro::pipeline::csv::write_atomic;
+use repro::pipeline::slurm::{sh_quote, SlurmPlan};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 

@@ -7,11 +7,12 @@ use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
 use super::shard::{self, TargetJobs};
 use anyhow::{anyhow, Context as _, Result};
-use repro::artefacts::csv::write_atomic;
-use repro::artefacts::sweep::Sweep;
-use repro::artefacts::table4;
-use repro::artefacts::target::Context;
-use repro::artefacts::{report, targets};
+use repro::paper as targets;
+use repro::paper::table4;
+use repro::pipeline::context::Context;
+use repro::pipeline::csv::write_atomic;
+use repro::pipeline::sweep::Sweep;
+use repro::report;
 use std::time::Instant;
 
 /// Every solve of the targets `names` in the context, with its target.
@@ -88,7 +89,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "study".into());
     let study_jobs = |ctx: &Context| -> Result<TargetJobs> {
-        let jobs = targets::figure::study_jobs(&sweep, None, ctx)
+        let jobs = targets::figures::study_jobs(&sweep, None, ctx)
             .map_err(|e| anyhow!("{}: {e}", args.file.display()))?;
         Ok(jobs.into_iter().map(|j| (stem.clone(), j)).collect())
     };
@@ -100,7 +101,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         if ctx.offline {
             shard::check_offline(ctx, &study_jobs(ctx)?)?;
         }
-        targets::figure::study(&stem, &sweep, ctx)
+        targets::figures::study(&stem, &sweep, ctx)
             .map_err(|e| anyhow!("{}: {e}", args.file.display()))
     })?;
     built.seconds = t.elapsed().as_secs_f64();

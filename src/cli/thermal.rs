@@ -4,12 +4,12 @@
 
 use super::args::ThermalArgs;
 use anyhow::{bail, Result};
-use repro::artefacts::run::thermal_contact;
 use repro::physics::case::{Case, Problem};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::thermal::{
     FilmProperties, Solid, ThermalError, ThermalInputs, ISOTHERMAL_CORRECTION_MAX,
 };
+use repro::pipeline::run::thermal_contact;
 use repro::solver::point::PointSolution;
 use repro::solver::thermal::{flat_film_thermal, point_thermal, Thermal};
 use serde_json::{json, Value};

@@ -1,0 +1,157 @@
+//! The base of a case: the related case whose converged solution it starts from
+//! (continuation, [`crate::solver::point::solve_from`]), a pure function of the case, so
+//! that a result stays a function of its case and its cache key whichever path solves it.
+//!
+//! A family is the cases that differ only in the slip and the Eyring stress: at the paper's
+//! slips their pressure and film hardly differ (the central film of a Figs. 4-6 family
+//! spreads by 1e-4, median), so each starts from one member, the base:
+//! - a physical case (Newtonian or Eyring): the same contact at `S` = 0.5 % and `tau0` =
+//!   6 MPa, the middle of Table 2's slip and Eyring-stress ranges (for Figs. 4-6 a member of
+//!   every family; for a user's study the same rule, so its families share a base with
+//!   Table 2's where they meet it);
+//! - a case in Moes groups (Figs. 1-3): the same `M`, `L` and `D` at `S-bar` = 0.1, the
+//!   middle of the paper's two decades, with the same dimensionless Eyring stress
+//!   `S / S-bar`;
+//! - a case with a limiting shear stress: its Eyring twin (which has its own base).
+//!
+//! A case that is its own base solves cold, from the Hertzian pressure.
+
+use crate::physics::case::{Case, Problem, Spec};
+use crate::physics::lubricant::LubricantTable;
+use crate::physics::rheology::Rheology;
+use crate::solver::output::{Progress, SolveError};
+use crate::solver::point::{self, Params, PointSolution, Start};
+
+/// The base's slide-to-roll ratio for a physical case.
+pub const BASE_SLIP: f64 = 0.005;
+/// The base's Eyring stress for a physical case, Pa.
+pub const BASE_TAU0_PA: f64 = 6e6;
+/// The base's dimensionless slip for a case in Moes groups.
+pub const BASE_S_BAR: f64 = 0.1;
+
+/// The base of `case` (module documentation), or `None` where the case is its own base (or
+/// has no dimensionless Eyring stress to keep: pure rolling in Moes groups).
+pub fn base_of(case: &Case) -> Option<Case> {
+    if let Rheology::EyringLss(_) = case.physics.rheology {
+        let mut twin = case.clone();
+        twin.physics.rheology = Rheology::Eyring;
+        return Some(twin);
+    }
+    let mut base = case.clone();
+    match &mut base.spec {
+        Spec::Physical(p) => {
+            if p.slip == BASE_SLIP && p.tau0_pa == BASE_TAU0_PA {
+                return None;
+            }
+            p.slip = BASE_SLIP;
+            p.tau0_pa = BASE_TAU0_PA;
+        }
+        Spec::Dimensionless(d) => {
+            if d.s_bar == BASE_S_BAR || d.s_bar <= 0.0 {
+                return None;
+            }
+            d.slip = d.slip / d.s_bar * BASE_S_BAR;
+            d.s_bar = BASE_S_BAR;
+        }
+    }
+    Some(base)
+}
+
+/// Solves a point case as every command and pipeline does: the chain of its bases first,
+/// the deepest cold and each from the one below, at the same parameters, then `problem`
+/// (the case's) from its base; `observer` hears of the case's own solve, `on_base` of each
+/// base before it is solved. The same arithmetic as a sweep's ([`super::run::run_jobs`]).
+pub fn solve_case(
+    case: &Case,
+    problem: &Problem,
+    params: &Params,
+    lubricants: &LubricantTable,
+    on_base: &mut dyn FnMut(&Case),
+    observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
+    let chain: Vec<Case> = std::iter::successors(base_of(case), base_of).collect();
+    let mut start: Option<Start> = None;
+    for base in chain.iter().rev() {
+        on_base(base);
+        let bp = Problem::from_case(base, lubricants)
+            .map_err(|e| SolveError::InvalidParams(format!("the case's base: {e}")))?;
+        // A base that fails leaves its members to start cold, as in a sweep.
+        start = match &start {
+            Some(s) => point::solve_from(&bp, params, s, None),
+            None => point::solve(&bp, params, None),
+        }
+        .ok()
+        .map(|s| Start::of(&s));
+    }
+    match &start {
+        Some(s) => point::solve_from(problem, params, s, observer),
+        None => point::solve(problem, params, observer),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::rheology::LimitingShearStress;
+    use crate::pipeline::sweep::shipped_sweep;
+    use std::collections::BTreeMap;
+
+    #[test]
+    fn every_table_2_family_has_its_base_among_its_nine_members() {
+        for fig in ["fig4", "fig5", "fig6"] {
+            let cases = shipped_sweep(fig).unwrap().cases;
+            let mut families: BTreeMap<String, Vec<&Case>> = BTreeMap::new();
+            for c in &cases {
+                let key = match base_of(c) {
+                    Some(b) => serde_json::to_string(&b).unwrap(),
+                    None => serde_json::to_string(c).unwrap(),
+                };
+                families.entry(key).or_default().push(c);
+            }
+            assert_eq!(families.len(), 27, "{fig}: 27 families");
+            for (base, members) in &families {
+                assert_eq!(members.len(), 9, "{fig}: {base}");
+                let own = members.iter().filter(|c| base_of(c).is_none()).count();
+                assert_eq!(own, 1, "{fig}: one member is the base: {base}");
+            }
+        }
+    }
+
+    #[test]
+    fn figs_1_to_3_families_keep_m_l_and_the_eyring_stress() {
+        let cases = shipped_sweep("fig1-3").unwrap().cases;
+        let mut bases = 0;
+        for c in &cases {
+            let Spec::Dimensionless(d) = &c.spec else {
+                panic!("Figs. 1-3 are in Moes groups")
+            };
+            match base_of(c) {
+                None => {
+                    assert_eq!(d.s_bar, BASE_S_BAR);
+                    bases += 1;
+                }
+                Some(b) => {
+                    let Spec::Dimensionless(db) = &b.spec else {
+                        panic!()
+                    };
+                    assert_eq!((db.m, db.l, db.d, db.s_bar), (d.m, d.l, d.d, BASE_S_BAR));
+                    // The dimensionless Eyring stress S / S-bar is kept (2 in Figs. 1-3).
+                    assert!((db.slip / db.s_bar - d.slip / d.s_bar).abs() < 1e-12);
+                }
+            }
+        }
+        assert_eq!(bases, 25, "one base per (M, L)");
+    }
+
+    #[test]
+    fn a_limited_case_starts_from_its_eyring_twin() {
+        let mut c = shipped_sweep("fig4").unwrap().cases[0].clone();
+        c.physics.rheology = Rheology::EyringLss(LimitingShearStress {
+            lambda: 0.08,
+            tau_l0_pa: 5e6,
+        });
+        let twin = base_of(&c).unwrap();
+        assert_eq!(twin.physics.rheology, Rheology::Eyring);
+        assert_eq!(twin.spec, c.spec);
+    }
+}
