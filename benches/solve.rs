@@ -12,7 +12,8 @@
 use criterion::{BenchmarkId, Criterion};
 use repro::paper::accuracy::{study_cases, Contact};
 use repro::paper::build;
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::paper::figures::FIG7;
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use repro::physics::density::DensityLaw;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
@@ -125,7 +126,7 @@ fn effects(c: &mut Criterion) {
 fn target(c: &mut Criterion) {
     let level = if full() { 5 } else { 4 };
     let out = std::env::temp_dir().join(format!("repro-bench-{}", std::process::id()));
-    let progress = |_: &str, _: repro::pipeline::run::RunProgress| {};
+    let progress = |_: &str, _: repro::pipeline::executor::RunProgress| {};
     let warn = |_: String| {};
     let ctx = Context {
         out: out.clone(),
@@ -140,7 +141,7 @@ fn target(c: &mut Criterion) {
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(30));
     group.bench_function(format!("fig7-level{level}-cold"), |b| {
-        b.iter(|| build("fig7", &ctx).expect("fig7 builds"))
+        b.iter(|| build(&FIG7, &ctx).expect("fig7 builds"))
     });
     group.finish();
     let _ = std::fs::remove_dir_all(out);
@@ -152,7 +153,7 @@ fn target(c: &mut Criterion) {
 fn hard_case(c: &mut Criterion) {
     let rx = 1.03875e-2;
     let case = Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: "5p4e".into(),
                 temperature_c: 40.0,
@@ -189,7 +190,7 @@ fn speed(c: &mut Criterion) {
         .expect("the Table 4 case resolves");
     let newtonian = Problem::from_case(
         &Case {
-            spec: Spec::Dimensionless(repro::physics::case::DimensionlessCase {
+            spec: CaseForm::Dimensionless(repro::physics::case::DimensionlessCase {
                 m: 20.0,
                 l: 10.0,
                 s_bar: 0.0,

@@ -2,8 +2,8 @@
 //! Eyring stress is caught, and neither the thread count nor a rerun changes a result.
 
 use crate::support::repro;
-use repro::paper::figures::runs_csv;
-use repro::pipeline::run::{run_cases, CaseRun, Store};
+use repro::paper::figures::{rows, Plot};
+use repro::pipeline::executor::{run_cases, CachePolicy, PointRun};
 use repro::pipeline::snapshot::compare;
 use repro::pipeline::sweep::Sweep;
 use std::path::PathBuf;
@@ -90,13 +90,18 @@ fn csv_of(sweep: &Sweep, threads: usize) -> String {
         .num_threads(threads)
         .build()
         .expect("pool");
-    let runs: Vec<CaseRun> = pool.install(|| {
-        run_cases("test", &sweep.cases, 5, Store::Nothing, &|_| {}, &|_| {}).expect("runs")
+    let runs: Vec<PointRun> = pool.install(|| {
+        run_cases(
+            "test",
+            &sweep.cases,
+            5,
+            CachePolicy::Ignore,
+            &|_| {},
+            &|_| {},
+        )
+        .expect("runs")
     });
-    runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", |r| {
-        r.record()
-            .map(|rec| (r.problem.tau_c(), rec.mu_bar_sliding))
-    })
+    rows::csv(&runs, Plot::SLIDING)
 }
 
 /// Each case is solved serially on one thread: one thread, two threads and a rerun give the

@@ -10,7 +10,7 @@
 //! 5 and 6 keep each solve under a few seconds; the paths are the same at every level.
 
 use repro::physics::case::{
-    Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
+    Case, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
@@ -22,7 +22,7 @@ const TOLERANCE: f64 = 5e-4;
 
 fn physical(lubricant: &str, t: f64, ph_gpa: f64, um: f64, slip: f64, tau0_mpa: f64) -> Case {
     Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: lubricant.into(),
                 temperature_c: t,
@@ -149,7 +149,7 @@ fn a_figs_1_to_3_family_starts_from_s_bar_0_1_across_two_decades() {
     // base at 0.1, level 6.
     for s_bar in [0.01, 1.0] {
         let case = Case {
-            spec: Spec::Dimensionless(DimensionlessCase {
+            spec: CaseForm::Dimensionless(DimensionlessCase {
                 m: 1000.0,
                 l: 10.0,
                 s_bar,

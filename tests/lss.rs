@@ -5,7 +5,7 @@
 
 use crate::support::repro;
 use repro::paper::figures::line::table3_line_cases;
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use repro::physics::flat_film::{ln_couette_centre, mu_bar_flat, Geometry};
 use repro::physics::line_contact::{LineEyringFlow, LineProblem};
 use repro::physics::lubricant::LubricantTable;
@@ -17,7 +17,7 @@ use repro::solver::{line, point};
 fn case(rheology: Rheology) -> Problem {
     let rx = 1.03875e-2;
     let case = Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: "mineral-oil-a".into(),
                 temperature_c: 40.0,

@@ -15,7 +15,8 @@ use repro::paper::accuracy::{pipeline_params, study_cases, Contact, Measured};
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
 use repro::pipeline::cache::{Cache, Lookup};
-use repro::pipeline::run::{point_jobs, Outcome, Record};
+use repro::pipeline::job::point_jobs;
+use repro::pipeline::outcome::{CaseOutcome, SolvedCase};
 use repro::pipeline::sweep::Sweep;
 use std::path::{Path, PathBuf};
 
@@ -130,7 +131,7 @@ impl Outputs {
         }
     }
 
-    fn of_record(r: &Record) -> Self {
+    fn of_record(r: &SolvedCase) -> Self {
         Outputs {
             h_central: r.h_central,
             hc_moes: Some(r.hc_moes),
@@ -220,14 +221,15 @@ fn study(name: &str, text: &str) -> Outputs {
     let cache = Cache::new(dir.join("cache"));
     // The point's own entry (a point that is not its own base has its base's entry beside it).
     let sweep = Sweep::parse("one-rule.toml", text).expect("a valid study");
-    let (job, _) = point_jobs(&sweep.cases, LEVEL)
+    let job = point_jobs(&sweep.cases, LEVEL)
         .expect("the study's job")
-        .remove(0);
+        .remove(0)
+        .job;
     let keys = cache.keys().expect("the study's cache");
     let entries = if job.base.is_some() { 2 } else { 1 };
     assert_eq!(keys.len(), entries, "its entry and its base's: {keys:?}");
-    let bits = match cache.get::<Outcome>(&job.key) {
-        Lookup::Hit(Outcome::Solved(r), _) => Outputs::of_record(&r),
+    let bits = match cache.get::<CaseOutcome>(&job.key) {
+        Lookup::Hit(CaseOutcome::Solved(r), _) => Outputs::of_record(&r),
         other => panic!("repro run: {other:?}"),
     };
     let _ = std::fs::remove_dir_all(&dir);

@@ -5,7 +5,7 @@
 
 use crate::support::repro;
 use repro::pipeline::cache::{Cache, Stamp};
-use repro::pipeline::run::Outcome;
+use repro::pipeline::outcome::{CaseOutcome, Failure, FailureKind};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -168,10 +168,11 @@ fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
 
     // A different result under a key the merged cache has: refused, named, exit 1.
     let key = keys(&shards[0])[0].clone();
-    let other = Outcome::Failed {
+    let other = CaseOutcome::Failed(Failure {
+        kind: FailureKind::NotConverged,
         error: "not converged (edited)".into(),
         residual_history: vec![1.0],
-    };
+    });
     Cache::new(&shards[0])
         .put(&key, &other, &Stamp::now(0.0))
         .expect("write");

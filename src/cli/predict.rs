@@ -18,7 +18,7 @@ use super::thermal::{self, ThermalReport};
 use anyhow::{bail, Result};
 use repro::paper::mastercurve::fit::FIT_TAU_C_MIN;
 use repro::paper::prediction::{Band, Prediction};
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Spec};
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::thermal::ThermalError;
 use repro::physics::traction::{
@@ -94,7 +94,7 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     let start = Instant::now();
     let ph_pa = characteristic(&point, &lubs).map_err(flag_error)?.ph_pa;
     let case = Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant,
             ph_pa,
             um_m_s: um,
@@ -224,7 +224,7 @@ struct LubricantReport {
 /// What the lubricant is, its `eta0` and `alpha`, and where `alpha` comes from: Table 1, the
 /// user, or a correlation (then with its band and source, and said so).
 fn describe_lubricant(case: &Case, lubs: &LubricantTable) -> Result<LubricantReport> {
-    let Spec::Physical(p) = &case.spec else {
+    let CaseForm::Physical(p) = &case.spec else {
         bail!("repro predict takes a physical contact");
     };
     let state = p.lubricant.resolve(lubs).map_err(flag_error)?;

@@ -2,8 +2,8 @@
 //! text, a failed solve, the per-cycle progress of one solve and a target's summary line.
 
 use repro::paper::mastercurve::fit::{mastercurve, PAPER_C};
+use repro::paper::TargetReport;
 use repro::physics::case::Physics;
-use repro::pipeline::context::Built;
 use repro::solver::output::{Film, Friction, Info, Progress, SolveError, Step};
 use serde_json::{json, Map, Value};
 
@@ -94,7 +94,7 @@ pub fn solve_progress(quiet: bool) -> impl FnMut(&Progress) {
 }
 
 /// One line per built target: cases, solved, level, time, fit, files.
-pub fn summary_line(b: &Built) -> String {
+pub fn summary_line(b: &TargetReport) -> String {
     let mut line = format!("{}: {} cases", b.name, b.cases);
     if let (Some(s), Some(c)) = (b.solved, b.cached) {
         line.push_str(&format!(", {s} solved, {c} cached"));
@@ -103,11 +103,8 @@ pub fn summary_line(b: &Built) -> String {
         line.push_str(&format!(", level {l}"));
     }
     line.push_str(&format!(", {:.1} s", b.seconds));
-    if let Some(f) = b.fit {
-        line.push_str(&format!(", {}", f.describe()));
-    }
-    if b.name == "fig1" {
-        line.push_str(&format!(" ({})", b.ours));
+    if let Some(h) = &b.headline {
+        line.push_str(&format!(", {h}"));
     }
     line.push_str(&format!(" -> {}", b.files.join(", ")));
     line

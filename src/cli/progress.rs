@@ -8,7 +8,7 @@ use super::config::context;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
 use repro::pipeline::context::Context;
-use repro::pipeline::run::RunProgress;
+use repro::pipeline::executor::RunProgress;
 use std::io::IsTerminal;
 use std::sync::Mutex;
 

@@ -9,7 +9,7 @@ use repro::physics::lubricant::LubricantTable;
 use repro::physics::thermal::{
     FilmProperties, Solid, ThermalError, ThermalInputs, ISOTHERMAL_CORRECTION_MAX,
 };
-use repro::pipeline::run::thermal_contact;
+use repro::pipeline::job::thermal_contact;
 use repro::solver::point::PointSolution;
 use repro::solver::thermal::{flat_film_thermal, point_thermal, Thermal};
 use serde_json::{json, Value};

@@ -1,15 +1,22 @@
 //! Table 4: variation of the central film `H = h/c` and of the sliding reduced friction with
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
+use crate::paper::artefact::{Artefact, TargetReport};
+use crate::paper::mastercurve::fit::{implied_c, mastercurve, PAPER_C};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::cache::{key_of, Stamp};
-use crate::pipeline::run::{
-    case_key, describe, run_jobs, thermal_contact, Job, Outcome, RunProgress, Store, Work,
-};
+use crate::pipeline::context::Context;
+use crate::pipeline::csv::Decimals;
+use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
+use crate::pipeline::job::{thermal_contact, Job, Solve};
+use crate::pipeline::keys::case_key;
+use crate::pipeline::label::case_label;
+use crate::pipeline::outcome::CaseOutcome;
+use crate::pipeline::provenance::{Provenance, SUFFIX};
 use crate::solver::output::Progress;
-use crate::solver::point::{solve, Params};
-use serde::Deserialize;
+use crate::solver::point::{solve, Params, SOLVER_REVISION};
+use serde::{Deserialize, Serialize};
 
 /// The case definition shipped in `cases/table4.toml`.
 pub const CASE_TOML: &str = include_str!("../../cases/table4.toml");
@@ -55,11 +62,18 @@ pub struct Row {
     /// Grid level.
     pub level: u32,
     /// The solve, or why it failed.
-    pub outcome: Outcome,
+    pub outcome: CaseOutcome,
     /// Wall time of the solve, s (unknown for a cache entry written before stamps).
     pub seconds: Option<f64>,
     /// The case's characteristic shear stress, Eq. (12) (the same at every level).
     pub tau_c: f64,
+    /// Its cache key, when it went through the cache.
+    pub key: Option<String>,
+    /// How its cache entry was made (`None` outside the cache and for entries written
+    /// before stamps).
+    pub stamp: Option<Stamp>,
+    /// Taken from the cache.
+    pub cached: bool,
 }
 
 impl Row {
@@ -94,9 +108,12 @@ pub fn compute(
         let solved = solve(&problem, &params(&problem, level), Some(&mut observer));
         rows.push(Row {
             level,
-            outcome: Outcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
+            outcome: CaseOutcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
             seconds: Some(t.elapsed().as_secs_f64()),
             tau_c: problem.tau_c(),
+            key: None,
+            stamp: None,
+            cached: false,
         });
     }
     Ok(rows)
@@ -120,8 +137,8 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
                     case_key(&spec.case, &params, None),
                     params.require_positive_film,
                 )),
-                label: format!("Appendix case ({})", describe(&spec.case, level)),
-                work: Work::Point {
+                label: format!("Appendix case ({})", case_label(&spec.case, level)),
+                solve: Solve::Point {
                     problem: problem.clone(),
                     params: Box::new(params),
                     thermal: thermal.clone(),
@@ -132,131 +149,172 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
         .collect())
 }
 
-/// Table 4 as the target of `repro all` builds it: its rows, with each row's cache key and
-/// the stamp of its entry, and how many came from the cache.
-#[derive(Debug, Clone)]
-pub struct Stored {
-    /// One row per level.
-    pub rows: Vec<Row>,
-    /// The cache key of each row.
-    pub keys: Vec<String>,
-    /// How each row's result was made.
-    pub stamps: Vec<Option<Stamp>>,
-    /// Rows taken from the cache.
-    pub cached: usize,
-}
-
-/// Table 4 through `store`: each level's wall time is the one recorded when its entry was
-/// solved (solves run in parallel here, so a cold run's times are those of a shared machine;
-/// `repro table4` measures them one after the other).
-pub fn compute_stored(
+/// Table 4 through the cache as `policy` says: each level's wall time is the one recorded
+/// when its entry was solved (solves run in parallel here, so a cold run's times are those
+/// of a shared machine; `repro table4` measures them one after the other).
+pub fn compute_cached(
     spec: &Table4Case,
     levels: &[u32],
-    store: Store,
+    policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Stored, String> {
+) -> Result<Vec<Row>, String> {
     let tau_c = spec.problem()?.tau_c();
     let jobs = jobs(spec, levels)?;
-    let done = run_jobs("table4", &jobs, store, progress, warn)?;
-    let cached = done.iter().filter(|d| d.cached).count();
-    let stamps = done.iter().map(|d| d.stamp.clone()).collect();
-    let rows = levels
+    let finished = run_jobs("table4", &jobs, policy, progress, warn)?;
+    Ok(levels
         .iter()
-        .zip(done)
-        .map(|(&level, d)| Row {
+        .zip(jobs)
+        .zip(finished)
+        .map(|((&level, job), f)| Row {
             level,
-            seconds: d.stamp.map(|s| s.seconds),
-            outcome: d.outcome,
+            seconds: f.stamp.as_ref().map(|s| s.seconds),
+            outcome: f.outcome,
             tau_c,
+            key: Some(job.key),
+            stamp: f.stamp,
+            cached: f.cached,
         })
-        .collect();
-    Ok(Stored {
-        rows,
-        keys: jobs.into_iter().map(|j| j.key).collect(),
-        stamps,
-        cached,
-    })
+        .collect())
+}
+
+/// Table 4 as a target: the Appendix case at the levels of `cases/table4.toml`, through the
+/// cache (`repro table4` measures the wall times one level after the other instead).
+pub struct Table4;
+
+impl Artefact for Table4 {
+    fn name(&self) -> &'static str {
+        "table4"
+    }
+
+    fn describe(&self) -> &'static str {
+        "Grid convergence of Hc and sliding mu-bar for the Appendix case, levels 5-8, with wall times"
+    }
+
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+        let spec = Table4Case::shipped()?;
+        jobs(&spec, &spec.levels)
+    }
+
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        let spec = Table4Case::shipped()?;
+        // A grid-convergence table: always its own levels (cases/table4.toml), whatever
+        // level the other targets are built at.
+        let levels = spec.levels.clone();
+        let progress = |p| (ctx.progress)("table4", p);
+        let rows = compute_cached(&spec, &levels, ctx.cache_policy(), &progress, ctx.warn)?;
+        let csv = ctx.write("table4.csv", &to_csv(&rows))?;
+        let mut sidecar = Provenance::new("table4", std::slice::from_ref(&csv));
+        sidecar.solver_revision = Some(SOLVER_REVISION.to_string());
+        let problem = spec.problem()?;
+        sidecar.params = levels
+            .iter()
+            .map(|&l| format!("{:?}", params(&problem, l)))
+            .collect();
+        sidecar.add_rows(
+            &csv,
+            rows.iter()
+                .map(|r| (r.key.as_deref().unwrap_or_default(), r.stamp.as_ref())),
+        );
+        let sidecar = ctx.write(&format!("table4{SUFFIX}"), &sidecar.to_json())?;
+        let solved = rows.iter().filter(|r| r.outcome.solved().is_some()).count();
+        let ours = rows
+            .iter()
+            .filter_map(|r| {
+                r.outcome.solved().map(|s| {
+                    format!(
+                        "level {}: Hc {:.4e}, mu-bar {:.2}",
+                        r.level, s.h_central, s.mu_bar_sliding
+                    )
+                })
+            })
+            .collect::<Vec<_>>()
+            .join("; ")
+            + "; "
+            + mastercurve_note(&rows).trim_end();
+        let claim = PAPER
+            .iter()
+            .map(|p| format!("level {}: Hc {:.4e}, mu-bar {:.2}", p.0, p.1, p.2))
+            .collect::<Vec<_>>()
+            .join("; ");
+        Ok(TargetReport {
+            solved: Some(solved),
+            cached: Some(rows.iter().filter(|r| r.cached).count()),
+            level: levels.iter().max().copied(),
+            paper_claim: claim,
+            ours,
+            ..TargetReport::emitted(
+                "table4",
+                "Table 4: grid convergence of the Appendix case",
+                rows.len(),
+                vec![csv, sidecar],
+            )
+        })
+    }
+}
+
+/// A row of `table4.csv`: one level, ours beside the paper's.
+#[derive(Debug, Default, Serialize)]
+struct Table4Row {
+    level: u32,
+    points: String,
+    hc: Option<f64>,
+    hc_moes: Option<f64>,
+    h_min: Option<f64>,
+    mu_bar_sliding: Option<f64>,
+    paper_hc: Option<f64>,
+    paper_mu_bar: Option<f64>,
+    tau_c: f64,
+    mu_bar_eq13: f64,
+    implied_c: Option<f64>,
+    paper_implied_c: Option<f64>,
+    /// Finest-level cycles, or the length of a failure's residual history.
+    cycles: usize,
+    residual: Option<f64>,
+    seconds: Option<Decimals<3>>,
+    status: &'static str,
 }
 
 /// CSV of the rows, with the paper's values beside ours.
 pub fn to_csv(rows: &[Row]) -> String {
-    use crate::paper::mastercurve::fit::{implied_c, mastercurve, PAPER_C};
-    use crate::pipeline::csv::{num, opt, table};
-    let header = [
-        "level",
-        "points",
-        "hc",
-        "hc_moes",
-        "h_min",
-        "mu_bar_sliding",
-        "paper_hc",
-        "paper_mu_bar",
-        "tau_c",
-        "mu_bar_eq13",
-        "implied_c",
-        "paper_implied_c",
-        "cycles",
-        "residual",
-        "seconds",
-        "status",
-    ];
-    let body: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
-            let n = 1u32 << (r.level + 1);
-            let paper = r.paper();
-            let (hc, hcm, hmin, mu, cycles, res, status) = match &r.outcome {
-                Outcome::Solved(s) => (
-                    num(s.h_central),
-                    num(s.hc_moes),
-                    num(s.h_min),
-                    num(s.mu_bar_sliding),
-                    s.cycles.to_string(),
-                    num(s.residual),
-                    if s.h_min > 0.0 {
-                        "ok"
-                    } else {
-                        "ok-film-nonpositive"
-                    }
-                    .to_string(),
-                ),
-                Outcome::Failed {
-                    residual_history, ..
-                } => (
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                    String::new(),
-                    residual_history.len().to_string(),
-                    opt(residual_history.last().copied()),
-                    "failed".into(),
-                ),
-            };
-            vec![
-                r.level.to_string(),
-                format!("{n}x{n}"),
-                hc,
-                hcm,
-                hmin,
-                mu,
-                opt(paper.map(|p| p.0)),
-                opt(paper.map(|p| p.1)),
-                num(r.tau_c),
-                num(mastercurve(r.tau_c, PAPER_C)),
-                opt(r
-                    .outcome
-                    .record()
-                    .map(|s| implied_c(r.tau_c, s.mu_bar_sliding))),
-                opt(paper.map(|p| implied_c(r.tau_c, p.1))),
-                cycles,
-                res,
-                r.seconds.map(|t| format!("{t:.3}")).unwrap_or_default(),
-                status,
-            ]
-        })
-        .collect();
-    table(&header, &body)
+    crate::pipeline::csv::rows(rows.iter().map(|r| {
+        let n = 1u32 << (r.level + 1);
+        let paper = r.paper();
+        let row = Table4Row {
+            level: r.level,
+            points: format!("{n}x{n}"),
+            paper_hc: paper.map(|p| p.0),
+            paper_mu_bar: paper.map(|p| p.1),
+            tau_c: r.tau_c,
+            mu_bar_eq13: mastercurve(r.tau_c, PAPER_C),
+            paper_implied_c: paper.map(|p| implied_c(r.tau_c, p.1)),
+            seconds: r.seconds.map(Decimals),
+            ..Table4Row::default()
+        };
+        match &r.outcome {
+            CaseOutcome::Solved(s) => Table4Row {
+                hc: Some(s.h_central),
+                hc_moes: Some(s.hc_moes),
+                h_min: Some(s.h_min),
+                mu_bar_sliding: Some(s.mu_bar_sliding),
+                implied_c: Some(implied_c(r.tau_c, s.mu_bar_sliding)),
+                cycles: s.cycles,
+                residual: Some(s.residual),
+                status: if s.h_min > 0.0 {
+                    "ok"
+                } else {
+                    "ok-film-nonpositive"
+                },
+                ..row
+            },
+            CaseOutcome::Failed(f) => Table4Row {
+                cycles: f.residual_history.len(),
+                residual: f.residual_history.last().copied(),
+                status: "failed",
+                ..row
+            },
+        }
+    }))
 }
 
 /// A readable table with the paper's values side by side.
@@ -275,7 +333,7 @@ pub fn to_text(rows: &[Row]) -> String {
             .map(|p| format!("{:.2}", p.1))
             .unwrap_or_else(|| "-".into());
         match &r.outcome {
-            Outcome::Solved(s) => {
+            CaseOutcome::Solved(s) => {
                 let flag = if s.h_min > 0.0 {
                     ""
                 } else {
@@ -294,10 +352,11 @@ pub fn to_text(rows: &[Row]) -> String {
                     flag
                 ));
             }
-            Outcome::Failed { error: e, .. } => out.push_str(&format!(
-                "{:>5}  {:>9}  failed: {e}\n",
+            CaseOutcome::Failed(f) => out.push_str(&format!(
+                "{:>5}  {:>9}  failed: {}\n",
                 r.level,
-                format!("{n}x{n}")
+                format!("{n}x{n}"),
+                f.error
             )),
         }
     }
@@ -308,11 +367,10 @@ pub fn to_text(rows: &[Row]) -> String {
 /// Where the case sits on Eq. (13): its `tau_c`, the curve's `mu-bar`, and the `c` that
 /// would put the finest level's `mu-bar` (ours and the paper's) on the curve.
 pub fn mastercurve_note(rows: &[Row]) -> String {
-    use crate::paper::mastercurve::fit::{implied_c, mastercurve, PAPER_C};
     let Some((r, ours)) = rows
         .iter()
         .rev()
-        .find_map(|r| Some((r, r.outcome.record()?.mu_bar_sliding)))
+        .find_map(|r| Some((r, r.outcome.solved()?.mu_bar_sliding)))
     else {
         return String::new();
     };
@@ -347,7 +405,6 @@ pub fn paper_implied_c() -> Option<(f64, f64)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::paper::mastercurve::fit::{implied_c, mastercurve, PAPER_C};
 
     /// The Appendix case on the mastercurve, from the shipped case file. `tau_c` against a
     /// hand evaluation of Eq. (12) from Table 1 and the Nomenclature (Roelands with

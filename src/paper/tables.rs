@@ -1,275 +1,261 @@
-//! The table targets: Tables 1-3 emitted from `cases/` with their derived groups, and
-//! Table 4, the grid convergence of the Appendix case at its own levels.
+//! Tables 1-3: emitted from `cases/` with their derived groups (nothing is solved).
 
-use crate::physics::case::{LubricantSpec, Spec};
+use crate::paper::artefact::{Artefact, TargetReport};
+use crate::paper::figures::{FIG4, FIG5, FIG6, FIG7};
+use crate::physics::case::{CaseForm, LubricantSpec, Problem};
 use crate::physics::lubricant::LubricantTable;
-use crate::pipeline::context::{write, Built, Context};
-use crate::pipeline::csv::{num, table};
-use crate::pipeline::provenance::{Provenance, SUFFIX};
-use crate::pipeline::sweep::shipped_sweep;
-use crate::solver::point::SOLVER_REVISION;
+use crate::pipeline::context::Context;
+use crate::pipeline::csv::{num, rows};
+use crate::pipeline::job::Job;
+use serde::{Serialize, Serializer};
 
+/// An emitted table's report.
 fn emitted(
     name: &'static str,
     title: &str,
     cases: usize,
-    files: Vec<String>,
+    file: String,
     claim: &str,
-) -> Built {
-    Built {
-        name,
-        title: title.to_string(),
-        cases,
-        solved: None,
-        cached: None,
-        level: None,
-        fit: None,
-        fit_all: None,
-        seconds: 0.0,
-        files,
+) -> TargetReport {
+    TargetReport {
         paper_claim: claim.to_string(),
-        ours: "emitted from cases/".to_string(),
-        refined: Vec::new(),
+        ..TargetReport::emitted(name, title, cases, vec![file])
     }
 }
 
-pub(super) fn table1(ctx: &Context) -> Result<Built, String> {
+/// Table 1: the lubricants of `cases/lubricants.toml`.
+pub struct Table1;
+
+impl Artefact for Table1 {
+    fn name(&self) -> &'static str {
+        "table1"
+    }
+    fn describe(&self) -> &'static str {
+        "Lubricant properties alpha, eta0 at 40/60/100 C (from cases/lubricants.toml)"
+    }
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+        Ok(Vec::new())
+    }
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        table1(ctx)
+    }
+}
+
+/// Table 2: the operating parameters of Figs. 4-6 (`cases/fig4.toml` ...).
+pub struct Table2;
+
+impl Artefact for Table2 {
+    fn name(&self) -> &'static str {
+        "table2"
+    }
+    fn describe(&self) -> &'static str {
+        "Ranges of the operating parameters, with the derived M, L, S-bar ranges per lubricant"
+    }
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+        Ok(Vec::new())
+    }
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        table2(ctx)
+    }
+}
+
+/// Table 3: the contact configurations of Fig. 7 (`cases/fig7.toml`).
+pub struct Table3;
+
+impl Artefact for Table3 {
+    fn name(&self) -> &'static str {
+        "table3"
+    }
+    fn describe(&self) -> &'static str {
+        "The five contact-configuration cases, with M, L, S-bar, tau_c per geometry"
+    }
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+        Ok(Vec::new())
+    }
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        table3(ctx)
+    }
+}
+
+/// A row of `table1.csv`.
+#[derive(Debug, Default, Serialize)]
+struct Table1Row<'a> {
+    lubricant: &'a str,
+    description: &'a str,
+    temperature_c: f64,
+    alpha_per_gpa: f64,
+    eta0_mpa_s: f64,
+}
+
+fn table1(ctx: &Context) -> Result<TargetReport, String> {
     let lubs = LubricantTable::table1();
-    let mut rows = Vec::new();
+    let mut table = Vec::new();
     for (name, lub) in &lubs.0 {
         for (i, t) in lub.temperature_c.iter().enumerate() {
-            rows.push(vec![
-                name.clone(),
-                lub.description.clone(),
-                num(*t),
-                num(lub.alpha_per_gpa[i]),
-                num(lub.eta0_mpa_s[i]),
-            ]);
+            table.push(Table1Row {
+                lubricant: name,
+                description: &lub.description,
+                temperature_c: *t,
+                alpha_per_gpa: lub.alpha_per_gpa[i],
+                eta0_mpa_s: lub.eta0_mpa_s[i],
+            });
         }
     }
-    let n = rows.len();
-    let csv = table(
-        &[
-            "lubricant",
-            "description",
-            "temperature_c",
-            "alpha_per_gpa",
-            "eta0_mpa_s",
-        ],
-        &rows,
-    );
-    let f = write(ctx, "table1.csv", &csv)?;
+    let n = table.len();
+    let f = ctx.write("table1.csv", &rows(table))?;
     Ok(emitted(
         "table1",
         "Table 1: lubricant properties",
         n,
-        vec![f],
+        f,
         "Table 1 of the paper, eta0 in mPa s",
     ))
 }
 
-/// `(min, max)` of an iterator of values.
-fn range(v: impl Iterator<Item = f64>) -> (f64, f64) {
-    v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-        (a.min(x), b.max(x))
-    })
+/// The range of a parameter over a sweep, written `min-max`.
+#[derive(Debug, Default, Clone, Copy)]
+struct Span(f64, f64);
+
+impl Span {
+    /// The range of `v`.
+    fn of(v: impl Iterator<Item = f64>) -> Self {
+        let (a, b) = v.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+            (a.min(x), b.max(x))
+        });
+        Span(a, b)
+    }
 }
 
-pub(super) fn table2(ctx: &Context) -> Result<Built, String> {
+impl Serialize for Span {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&format!("{}-{}", num(self.0), num(self.1)))
+    }
+}
+
+/// A row of `table2.csv`: one lubricant's sweep.
+#[derive(Debug, Default, Serialize)]
+struct Table2Row {
+    lubricant: String,
+    ph_gpa: Span,
+    temperature_c: &'static str,
+    um_m_s: Span,
+    slip_percent: Span,
+    tau0_mpa: Span,
+    m_min: f64,
+    m_max: f64,
+    l_min: f64,
+    l_max: f64,
+    s_bar_min: f64,
+    s_bar_max: f64,
+    tau_c_min: f64,
+    tau_c_max: f64,
+}
+
+fn table2(ctx: &Context) -> Result<TargetReport, String> {
     let lubs = LubricantTable::table1();
-    let mut rows = Vec::new();
-    for fig in ["fig4", "fig5", "fig6"] {
-        let sweep = shipped_sweep(fig).map_err(|e| e.to_string())?;
-        let problems: Vec<_> = sweep
+    let mut table = Vec::new();
+    for fig in [&FIG4, &FIG5, &FIG6] {
+        let sweep = fig.sweep()?;
+        let problems: Vec<Problem> = sweep
             .cases
             .iter()
             .map(|c| {
-                crate::physics::case::Problem::from_case(c, &lubs)
-                    .map_err(|e| format!("cases/{fig}.toml: {e}"))
+                Problem::from_case(c, &lubs).map_err(|e| format!("cases/{}.toml: {e}", fig.sweep))
             })
             .collect::<Result<_, _>>()?;
-        let lub = match &sweep.cases[0].spec {
-            Spec::Physical(p) => match &p.lubricant {
+        let lubricant = match &sweep.cases[0].spec {
+            CaseForm::Physical(p) => match &p.lubricant {
                 LubricantSpec::Named { lubricant, .. } => lubricant.clone(),
                 LubricantSpec::Given { .. } => "given".into(),
                 LubricantSpec::Datasheet { datasheet, .. } => datasheet.label(),
             },
-            Spec::Dimensionless(_) => "dimensionless".into(),
+            CaseForm::Dimensionless(_) => "dimensionless".into(),
         };
         let phys: Vec<_> = sweep
             .cases
             .iter()
-            .filter_map(|c| {
-                if let Spec::Physical(p) = &c.spec {
-                    Some(p.clone())
-                } else {
-                    None
-                }
+            .filter_map(|c| match &c.spec {
+                CaseForm::Physical(p) => Some(p.clone()),
+                CaseForm::Dimensionless(_) => None,
             })
             .collect();
-        let (ph0, ph1) = range(phys.iter().map(|p| p.ph_pa / 1e9));
-        let (u0, u1) = range(phys.iter().map(|p| p.um_m_s));
-        let (s0, s1) = range(phys.iter().map(|p| p.slip * 100.0));
-        let (t0, t1) = range(phys.iter().map(|p| p.tau0_pa / 1e6));
-        let (m0, m1) = range(problems.iter().map(|p| p.groups.m));
-        let (l0, l1) = range(problems.iter().map(|p| p.groups.l));
-        let (b0, b1) = range(problems.iter().map(|p| p.groups.s_bar));
-        let (c0, c1) = range(problems.iter().map(|p| p.tau_c()));
-        rows.push(vec![
-            lub,
-            format!("{}-{}", num(ph0), num(ph1)),
-            "40/60/100".into(),
-            format!("{}-{}", num(u0), num(u1)),
-            format!("{}-{}", num(s0), num(s1)),
-            format!("{}-{}", num(t0), num(t1)),
-            num(m0),
-            num(m1),
-            num(l0),
-            num(l1),
-            num(b0),
-            num(b1),
-            num(c0),
-            num(c1),
-        ]);
+        let m = Span::of(problems.iter().map(|p| p.groups.m));
+        let l = Span::of(problems.iter().map(|p| p.groups.l));
+        let s_bar = Span::of(problems.iter().map(|p| p.groups.s_bar));
+        let tau_c = Span::of(problems.iter().map(|p| p.tau_c()));
+        table.push(Table2Row {
+            lubricant,
+            ph_gpa: Span::of(phys.iter().map(|p| p.ph_pa / 1e9)),
+            temperature_c: "40/60/100",
+            um_m_s: Span::of(phys.iter().map(|p| p.um_m_s)),
+            slip_percent: Span::of(phys.iter().map(|p| p.slip * 100.0)),
+            tau0_mpa: Span::of(phys.iter().map(|p| p.tau0_pa / 1e6)),
+            m_min: m.0,
+            m_max: m.1,
+            l_min: l.0,
+            l_max: l.1,
+            s_bar_min: s_bar.0,
+            s_bar_max: s_bar.1,
+            tau_c_min: tau_c.0,
+            tau_c_max: tau_c.1,
+        });
     }
-    let header = [
-        "lubricant",
-        "ph_gpa",
-        "temperature_c",
-        "um_m_s",
-        "slip_percent",
-        "tau0_mpa",
-        "m_min",
-        "m_max",
-        "l_min",
-        "l_max",
-        "s_bar_min",
-        "s_bar_max",
-        "tau_c_min",
-        "tau_c_max",
-    ];
-    let f = write(ctx, "table2.csv", &table(&header, &rows))?;
+    let n = table.len();
+    let f = ctx.write("table2.csv", &rows(table))?;
     Ok(emitted(
         "table2",
         "Table 2: ranges of the operating parameters",
-        rows.len(),
-        vec![f],
+        n,
+        f,
         "Table 2 of the paper",
     ))
 }
 
-pub(super) fn table3(ctx: &Context) -> Result<Built, String> {
-    let sweep = shipped_sweep("fig7").map_err(|e| e.to_string())?;
+/// A row of `table3.csv`: one case of Fig. 7.
+#[derive(Debug, Default, Serialize)]
+struct Table3Row {
+    d: f64,
+    ph_gpa: f64,
+    temperature_c: Option<f64>,
+    um_m_s: f64,
+    slip_percent: f64,
+    tau0_mpa: f64,
+    m: f64,
+    l: f64,
+    s_bar: f64,
+    kappa: f64,
+    tau_c: f64,
+}
+
+fn table3(ctx: &Context) -> Result<TargetReport, String> {
+    let sweep = FIG7.sweep()?;
     let lubs = LubricantTable::table1();
-    let mut rows = Vec::new();
+    let mut table = Vec::new();
     for c in &sweep.cases {
-        let p = crate::physics::case::Problem::from_case(c, &lubs)
-            .map_err(|e| format!("cases/fig7.toml: {e}"))?;
-        if let Spec::Physical(ph) = &c.spec {
-            let t = ph.lubricant.temperature_c().map(num).unwrap_or_default();
-            rows.push(vec![
-                num(ph.rx_m / ph.ry_m),
-                num(ph.ph_pa / 1e9),
-                t,
-                num(ph.um_m_s),
-                num(ph.slip * 100.0),
-                num(ph.tau0_pa / 1e6),
-                num(p.groups.m),
-                num(p.groups.l),
-                num(p.groups.s_bar),
-                num(p.groups.kappa),
-                num(p.tau_c()),
-            ]);
+        let p = Problem::from_case(c, &lubs).map_err(|e| format!("cases/fig7.toml: {e}"))?;
+        if let CaseForm::Physical(ph) = &c.spec {
+            table.push(Table3Row {
+                d: ph.rx_m / ph.ry_m,
+                ph_gpa: ph.ph_pa / 1e9,
+                temperature_c: ph.lubricant.temperature_c(),
+                um_m_s: ph.um_m_s,
+                slip_percent: ph.slip * 100.0,
+                tau0_mpa: ph.tau0_pa / 1e6,
+                m: p.groups.m,
+                l: p.groups.l,
+                s_bar: p.groups.s_bar,
+                kappa: p.groups.kappa,
+                tau_c: p.tau_c(),
+            });
         }
     }
-    let header = [
-        "d",
-        "ph_gpa",
-        "temperature_c",
-        "um_m_s",
-        "slip_percent",
-        "tau0_mpa",
-        "m",
-        "l",
-        "s_bar",
-        "kappa",
-        "tau_c",
-    ];
-    let f = write(ctx, "table3.csv", &table(&header, &rows))?;
+    let n = table.len();
+    let f = ctx.write("table3.csv", &rows(table))?;
     Ok(emitted(
         "table3",
         "Table 3: contact-configuration cases",
-        rows.len(),
-        vec![f],
+        n,
+        f,
         "Table 3 of the paper (five load cases)",
     ))
-}
-
-/// The solves of Table 4: the Appendix case at its own levels.
-pub(super) fn table4_jobs() -> Result<Vec<crate::pipeline::run::Job>, String> {
-    let spec = crate::paper::table4::Table4Case::shipped()?;
-    crate::paper::table4::jobs(&spec, &spec.levels)
-}
-
-pub(super) fn table4(ctx: &Context) -> Result<Built, String> {
-    use crate::paper::table4 as t4;
-    let spec = t4::Table4Case::shipped()?;
-    // A grid-convergence table: always its own levels (cases/table4.toml), whatever level
-    // the other targets are built at.
-    let levels = spec.levels.clone();
-    let progress = |p| (ctx.progress)("table4", p);
-    let stored = t4::compute_stored(&spec, &levels, ctx.store(), &progress, ctx.warn)?;
-    let rows = &stored.rows;
-    let csv = write(ctx, "table4.csv", &t4::to_csv(rows))?;
-    let mut sidecar = Provenance::new("table4", std::slice::from_ref(&csv));
-    sidecar.solver_revision = Some(SOLVER_REVISION.to_string());
-    let problem = spec.problem()?;
-    sidecar.params = levels
-        .iter()
-        .map(|&l| format!("{:?}", t4::params(&problem, l)))
-        .collect();
-    sidecar.add_rows(
-        &csv,
-        stored
-            .keys
-            .iter()
-            .map(String::as_str)
-            .zip(stored.stamps.iter().map(Option::as_ref)),
-    );
-    let sidecar = write(ctx, &format!("table4{SUFFIX}"), &sidecar.to_json())?;
-    let solved = rows.iter().filter(|r| r.outcome.record().is_some()).count();
-    let ours = rows
-        .iter()
-        .filter_map(|r| {
-            r.outcome.record().map(|s| {
-                format!(
-                    "level {}: Hc {:.4e}, mu-bar {:.2}",
-                    r.level, s.h_central, s.mu_bar_sliding
-                )
-            })
-        })
-        .collect::<Vec<_>>()
-        .join("; ")
-        + "; "
-        + t4::mastercurve_note(rows).trim_end();
-    let claim = t4::PAPER
-        .iter()
-        .map(|p| format!("level {}: Hc {:.4e}, mu-bar {:.2}", p.0, p.1, p.2))
-        .collect::<Vec<_>>()
-        .join("; ");
-    Ok(Built {
-        name: "table4",
-        title: "Table 4: grid convergence of the Appendix case".into(),
-        cases: rows.len(),
-        solved: Some(solved),
-        cached: Some(stored.cached),
-        level: levels.iter().max().copied(),
-        fit: None,
-        fit_all: None,
-        seconds: 0.0,
-        files: vec![csv, sidecar],
-        paper_claim: claim,
-        ours,
-        refined: Vec::new(),
-    })
 }

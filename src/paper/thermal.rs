@@ -8,47 +8,64 @@
 //! 46 and 21 W/(m K), the mid-plane bound, temperature rises), `thermal.svg` (isothermal and
 //! thermal `mu-bar` against `tau_c`, Eq. 13 dashed).
 
-use crate::paper::figures::{self, operating_cells, run_sweep};
+use crate::paper::artefact::{Artefact, TargetReport};
+use crate::paper::figures::rows::Operating;
+use crate::paper::figures::{SweepFigure, FIG4, FIG5, FIG6};
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{mastercurve as eq13_curve, MU_BAR, TAU_C};
 use crate::paper::table4::Table4Case;
-use crate::paper::target as registry_target;
-use crate::physics::case::Spec;
+use crate::physics::case::CaseForm;
 use crate::physics::thermal::ISOTHERMAL_CORRECTION_MAX;
-use crate::pipeline::context::{write, Built, Context};
-use crate::pipeline::csv::{num, table};
-use crate::pipeline::run::{CaseRun, Job};
-use crate::pipeline::sweep::shipped_sweep;
+use crate::pipeline::context::Context;
+use crate::pipeline::executor::PointRun;
+use crate::pipeline::job::Job;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
+use serde::Serialize;
 
 /// The figures corrected: figure, sweep, lubricant as named in the summary.
-const FIGURES: [(&str, &str); 3] = [
-    ("fig4", "mineral oil A"),
-    ("fig5", "traction fluid"),
-    ("fig6", "5P4E"),
+const FIGURES: [(&SweepFigure, &str); 3] = [
+    (&FIG4, "mineral oil A"),
+    (&FIG5, "traction fluid"),
+    (&FIG6, "5P4E"),
 ];
 
-/// Every solve of the target: Figs. 4-6's.
-pub fn jobs(ctx: &Context) -> Result<Vec<Job>, String> {
-    let mut all = Vec::new();
-    for (name, _) in FIGURES {
-        let level = registry_target(name).and_then(|t| t.default_level);
-        all.extend(figures::jobs(name, level, ctx)?);
+/// The `thermal` target.
+pub struct Thermal;
+
+impl Artefact for Thermal {
+    fn name(&self) -> &'static str {
+        "thermal"
     }
-    Ok(all)
+
+    fn describe(&self) -> &'static str {
+        "Beyond the paper: the shear-heating correction of Figs. 4-6 (isothermal vs thermal mu-bar, where the isothermal assumption holds)"
+    }
+
+    /// Figs. 4-6's solves: the correction is their post-process.
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+        let mut all = Vec::new();
+        for (fig, _) in FIGURES {
+            all.extend(fig.jobs(ctx)?);
+        }
+        Ok(all)
+    }
+
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        build(ctx)
+    }
 }
 
 /// One corrected case.
 struct Row<'a> {
     figure: &'static str,
     case: usize,
-    run: &'a CaseRun,
+    run: &'a PointRun,
 }
 
 impl Row<'_> {
     /// The correction with steel (46) and through-hardened steel (21), relative.
     fn corrections(&self) -> Option<(f64, f64)> {
-        let r = self.run.record()?;
+        let r = self.run.solved()?;
         match r.thermal.as_slice() {
             [steel, hardened, ..] => Some((
                 steel.correction(r.mu_bar_sliding),
@@ -60,7 +77,7 @@ impl Row<'_> {
 
     fn operating_point(&self) -> String {
         match &self.run.case.spec {
-            Spec::Physical(p) => {
+            CaseForm::Physical(p) => {
                 let t = p
                     .lubricant
                     .temperature_c()
@@ -74,96 +91,95 @@ impl Row<'_> {
                     p.tau0_pa / 1e6
                 )
             }
-            Spec::Dimensionless(_) => String::new(),
+            CaseForm::Dimensionless(_) => String::new(),
         }
     }
 }
 
+/// A row of `thermal.csv`: the case, its isothermal and thermal friction with the two solids,
+/// the temperature rises and the thermal groups.
+#[derive(Debug, Default, Serialize)]
+struct ThermalRow<'a> {
+    figure: &'a str,
+    case: usize,
+    #[serde(flatten)]
+    operating: Operating,
+    slip: f64,
+    tau0_mpa: Option<f64>,
+    tau_c: f64,
+    mu_bar_sliding: Option<f64>,
+    mu_bar_thermal: Option<f64>,
+    rel_dev_thermal: Option<f64>,
+    mu_bar_thermal_midplane: Option<f64>,
+    rel_dev_thermal_midplane: Option<f64>,
+    mu_bar_thermal_k21: Option<f64>,
+    rel_dev_thermal_k21: Option<f64>,
+    dt_film_k: Option<f64>,
+    dt_flash_k: Option<f64>,
+    dt_film_k21: Option<f64>,
+    beta0_per_k: Option<f64>,
+    peclet: Option<f64>,
+    film_peclet: Option<f64>,
+    isothermal_holds: &'a str,
+}
+
 fn csv(rows: &[Row]) -> String {
-    let header = [
-        "figure",
-        "case",
-        "lubricant",
-        "temperature_c",
-        "ph_gpa",
-        "um_m_s",
-        "slip",
-        "tau0_mpa",
-        "tau_c",
-        "mu_bar_sliding",
-        "mu_bar_thermal",
-        "rel_dev_thermal",
-        "mu_bar_thermal_midplane",
-        "rel_dev_thermal_midplane",
-        "mu_bar_thermal_k21",
-        "rel_dev_thermal_k21",
-        "dt_film_k",
-        "dt_flash_k",
-        "dt_film_k21",
-        "beta0_per_k",
-        "peclet",
-        "film_peclet",
-        "isothermal_holds",
-    ];
-    let cells = rows.iter().map(|row| {
+    crate::pipeline::csv::rows(rows.iter().map(|row| {
         let r = row.run;
-        let [lub, temp, ph, um, tau0] = operating_cells(&r.case);
-        let mut out = vec![
-            row.figure.to_string(),
-            row.case.to_string(),
-            lub,
-            temp,
-            ph,
-            um,
-            num(r.problem.groups.slip),
-            tau0,
-            num(r.problem.tau_c()),
-        ];
-        let rec = r.record();
-        match (rec, rec.map(|x| x.thermal.as_slice())) {
-            (Some(rec), Some([steel, hardened, ..])) => {
-                let iso = rec.mu_bar_sliding;
+        let (operating, tau0_mpa) = Operating::of(&r.case);
+        let out = ThermalRow {
+            figure: row.figure,
+            case: row.case,
+            operating,
+            slip: r.problem.groups.slip,
+            tau0_mpa,
+            tau_c: r.problem.tau_c(),
+            ..ThermalRow::default()
+        };
+        let solved = r.solved();
+        match (solved, solved.map(|x| x.thermal.as_slice())) {
+            (Some(solved), Some([steel, hardened, ..])) => {
+                let iso = solved.mu_bar_sliding;
                 let c = steel.correction(iso);
-                out.extend([
-                    num(iso),
-                    num(steel.mu_bar_sliding),
-                    num(c),
-                    num(steel.mu_bar_sliding_midplane),
-                    num(steel.mu_bar_sliding_midplane / iso - 1.0),
-                    num(hardened.mu_bar_sliding),
-                    num(hardened.correction(iso)),
-                    num(steel.dt_film_max_k),
-                    num(steel.dt_flash_max_k),
-                    num(hardened.dt_film_max_k),
-                    num(steel.beta0_per_k),
-                    num(steel.peclet),
-                    num(steel.film_peclet),
-                    if c.abs() < ISOTHERMAL_CORRECTION_MAX {
-                        "yes".into()
+                ThermalRow {
+                    mu_bar_sliding: Some(iso),
+                    mu_bar_thermal: Some(steel.mu_bar_sliding),
+                    rel_dev_thermal: Some(c),
+                    mu_bar_thermal_midplane: Some(steel.mu_bar_sliding_midplane),
+                    rel_dev_thermal_midplane: Some(steel.mu_bar_sliding_midplane / iso - 1.0),
+                    mu_bar_thermal_k21: Some(hardened.mu_bar_sliding),
+                    rel_dev_thermal_k21: Some(hardened.correction(iso)),
+                    dt_film_k: Some(steel.dt_film_max_k),
+                    dt_flash_k: Some(steel.dt_flash_max_k),
+                    dt_film_k21: Some(hardened.dt_film_max_k),
+                    beta0_per_k: Some(steel.beta0_per_k),
+                    peclet: Some(steel.peclet),
+                    film_peclet: Some(steel.film_peclet),
+                    isothermal_holds: if c.abs() < ISOTHERMAL_CORRECTION_MAX {
+                        "yes"
                     } else {
-                        "no".into()
+                        "no"
                     },
-                ]);
+                    ..out
+                }
             }
-            (Some(rec), _) => {
-                out.push(num(rec.mu_bar_sliding));
-                out.extend(std::iter::repeat_n(String::new(), 13));
-            }
-            (None, _) => out.extend(std::iter::repeat_n(String::new(), 14)),
+            (Some(solved), _) => ThermalRow {
+                mu_bar_sliding: Some(solved.mu_bar_sliding),
+                ..out
+            },
+            (None, _) => out,
         }
-        out
-    });
-    table(&header, cells)
+    }))
 }
 
 fn svg(rows: &[Row]) -> Result<Option<String>, String> {
     let mut series = Vec::new();
-    for (k, (name, lubricant)) in FIGURES.iter().enumerate() {
-        let mine = || rows.iter().filter(|r| r.figure == *name);
+    for (k, (fig, lubricant)) in FIGURES.iter().enumerate() {
+        let mine = || rows.iter().filter(|r| r.figure == fig.name);
         let point = |thermal: bool| {
             mine()
                 .filter_map(|r| {
-                    let rec = r.run.record()?;
+                    let rec = r.run.solved()?;
                     let y = if thermal {
                         rec.thermal()?.mu_bar_sliding
                     } else {
@@ -244,7 +260,7 @@ fn summary(rows: &[Row], figure: &str, lubricant: &str, table4: Option<&Row>) ->
     let convective = rows
         .iter()
         .filter(|r| r.figure == figure)
-        .filter_map(|r| r.run.record()?.thermal())
+        .filter_map(|r| r.run.solved()?.thermal())
         .filter(|t| t.film_peclet > 1.0)
         .count();
     if convective > 0 {
@@ -262,16 +278,13 @@ fn summary(rows: &[Row], figure: &str, lubricant: &str, table4: Option<&Row>) ->
     text
 }
 
-/// Builds the target.
-pub fn build(ctx: &Context) -> Result<Built, String> {
+fn build(ctx: &Context) -> Result<TargetReport, String> {
     let mut runs = Vec::new();
     let mut level = None;
-    for (name, _) in FIGURES {
-        let sweep = shipped_sweep(name).map_err(|e| e.to_string())?;
-        let default_level = registry_target(name).and_then(|t| t.default_level);
-        let (r, l) = run_sweep("thermal", &sweep, default_level, ctx)?;
+    for (fig, _) in FIGURES {
+        let (r, l) = fig.run("thermal", ctx)?;
         level = Some(l);
-        runs.push((name, r));
+        runs.push((fig.name, r));
     }
     let rows: Vec<Row> = runs
         .iter()
@@ -285,31 +298,34 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
         .collect();
     let appendix = Table4Case::shipped()?.case;
     let table4 = rows.iter().find(|r| r.run.case == appendix);
-    let mut files = vec![write(ctx, "thermal.csv", &csv(&rows))?];
+    let mut files = vec![ctx.write("thermal.csv", &csv(&rows))?];
     if let Some(s) = svg(&rows)? {
-        files.push(write(ctx, "thermal.svg", &s)?);
+        files.push(ctx.write("thermal.svg", &s)?);
     }
     let ours = FIGURES
         .iter()
-        .map(|(name, lubricant)| {
-            summary(&rows, name, lubricant, table4.filter(|r| r.figure == *name))
+        .map(|(fig, lubricant)| {
+            summary(
+                &rows,
+                fig.name,
+                lubricant,
+                table4.filter(|r| r.figure == fig.name),
+            )
         })
         .collect::<Vec<_>>()
         .join("; ");
-    let solved = rows.iter().filter(|r| r.run.record().is_some()).count();
-    Ok(Built {
-        name: "thermal",
-        title: "Beyond the paper: the shear-heating correction of Figs. 4-6".into(),
-        cases: rows.len(),
+    let solved = rows.iter().filter(|r| r.run.solved().is_some()).count();
+    Ok(TargetReport {
         solved: Some(solved),
         cached: Some(rows.iter().filter(|r| r.run.cached).count()),
         level,
-        fit: None,
-        fit_all: None,
-        seconds: 0.0,
-        files,
         paper_claim: "isothermal contact; with significant sliding Eq. (14) predicts too much friction (Conclusions)".into(),
         ours,
-        refined: Vec::new(),
+        ..TargetReport::emitted(
+            "thermal",
+            "Beyond the paper: the shear-heating correction of Figs. 4-6",
+            rows.len(),
+            files,
+        )
     })
 }

@@ -14,7 +14,7 @@
 //! The Hertz scales, Moes groups and viscosity laws are those of [`super::case`],
 //! [`super::line_contact`] and [`super::viscosity`]: nothing is recomputed here.
 
-use super::case::{CaseError, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use super::case::{CaseError, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use super::density::DensityLaw;
 use super::film::hc_eq10;
 use super::hertz::Hertz;
@@ -260,7 +260,7 @@ fn resolve(
                 }
             };
             let case = crate::physics::case::Case {
-                spec: Spec::Physical(PhysicalCase {
+                spec: CaseForm::Physical(PhysicalCase {
                     lubricant: point.lubricant.clone(),
                     ph_pa: ph,
                     um_m_s: um,

@@ -16,7 +16,7 @@
 //!
 //! A case that is its own base solves cold, from the Hertzian pressure.
 
-use crate::physics::case::{Case, Problem, Spec};
+use crate::physics::case::{Case, CaseForm, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::rheology::Rheology;
 use crate::solver::output::{Progress, SolveError};
@@ -39,14 +39,14 @@ pub fn base_of(case: &Case) -> Option<Case> {
     }
     let mut base = case.clone();
     match &mut base.spec {
-        Spec::Physical(p) => {
+        CaseForm::Physical(p) => {
             if p.slip == BASE_SLIP && p.tau0_pa == BASE_TAU0_PA {
                 return None;
             }
             p.slip = BASE_SLIP;
             p.tau0_pa = BASE_TAU0_PA;
         }
-        Spec::Dimensionless(d) => {
+        CaseForm::Dimensionless(d) => {
             if d.s_bar == BASE_S_BAR || d.s_bar <= 0.0 {
                 return None;
             }
@@ -60,7 +60,7 @@ pub fn base_of(case: &Case) -> Option<Case> {
 /// Solves a point case as every command and pipeline does: the chain of its bases first,
 /// the deepest cold and each from the one below, at the same parameters, then `problem`
 /// (the case's) from its base; `observer` hears of the case's own solve, `on_base` of each
-/// base before it is solved. The same arithmetic as a sweep's ([`super::run::run_jobs`]).
+/// base before it is solved. The same arithmetic as a sweep's ([`super::executor::run_jobs`]).
 pub fn solve_case(
     case: &Case,
     problem: &Problem,
@@ -122,7 +122,7 @@ mod tests {
         let cases = shipped_sweep("fig1-3").unwrap().cases;
         let mut bases = 0;
         for c in &cases {
-            let Spec::Dimensionless(d) = &c.spec else {
+            let CaseForm::Dimensionless(d) = &c.spec else {
                 panic!("Figs. 1-3 are in Moes groups")
             };
             match base_of(c) {
@@ -131,7 +131,7 @@ mod tests {
                     bases += 1;
                 }
                 Some(b) => {
-                    let Spec::Dimensionless(db) = &b.spec else {
+                    let CaseForm::Dimensionless(db) = &b.spec else {
                         panic!()
                     };
                     assert_eq!((db.m, db.l, db.d, db.s_bar), (d.m, d.l, d.d, BASE_S_BAR));

@@ -11,7 +11,7 @@
 //! sorted list is unrelated to where its case is in the sweep, so heavy and light regions of
 //! a grid spread over the shards.
 
-use super::run::Job;
+use super::job::Job;
 use std::collections::BTreeSet;
 use std::fmt;
 
@@ -120,7 +120,7 @@ impl Shard {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pipeline::run::point_jobs;
+    use crate::pipeline::job::point_jobs;
     use crate::pipeline::sweep::shipped_sweep;
 
     fn fig4_jobs() -> Vec<Job> {
@@ -128,7 +128,7 @@ mod tests {
         point_jobs(&sweep.cases, 5)
             .unwrap()
             .into_iter()
-            .map(|(j, _)| j)
+            .map(|p| p.job)
             .collect()
     }
 

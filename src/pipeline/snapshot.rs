@@ -110,7 +110,7 @@ pub fn normalize(csv: &str) -> String {
     };
     let header = pick(header);
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
-    comments + &table(&header, all.map(pick))
+    comments + &table(&header, &all.map(pick).collect::<Vec<_>>())
 }
 
 /// Compares a target's new CSV with its baseline, cell by cell (the [`IGNORED`] columns
@@ -156,17 +156,21 @@ pub fn compare(target: &str, baseline: &str, new: &str) -> Vec<Mismatch> {
     out
 }
 
-/// The CSV files of the built targets (and `summary.csv` when `with_summary`), as names
-/// relative to the output folder.
-pub fn csv_files(built: &[super::context::Built], with_summary: bool) -> Vec<String> {
-    let mut files: Vec<String> = built
-        .iter()
-        .flat_map(|b| b.files.iter().filter(|f| f.ends_with(".csv")).cloned())
+/// The CSV files among `files` (names relative to the output folder), and `summary.csv`
+/// when `with_summary`.
+pub fn csv_files<'a>(
+    files: impl IntoIterator<Item = &'a String>,
+    with_summary: bool,
+) -> Vec<String> {
+    let mut out: Vec<String> = files
+        .into_iter()
+        .filter(|f| f.ends_with(".csv"))
+        .cloned()
         .collect();
     if with_summary {
-        files.push("summary.csv".into());
+        out.push("summary.csv".into());
     }
-    files
+    out
 }
 
 /// Compares each of `files` in `new_dir` with the baseline of the same name in `baselines`.

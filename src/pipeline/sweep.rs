@@ -48,7 +48,7 @@
 //! its cache key; two studies with the same oil share their solves whatever they call it.
 
 use crate::physics::case::{
-    Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Spec,
+    Case, CaseError, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics,
 };
 use crate::physics::datasheet::Datasheet;
 use crate::physics::lubricant::LubricantTable;
@@ -346,7 +346,7 @@ impl PointSpec {
                     ))
                 }
             };
-            Spec::Dimensionless(DimensionlessCase {
+            CaseForm::Dimensionless(DimensionlessCase {
                 m: need(self.m, "m")?,
                 l: need(self.l, "l")?,
                 s_bar,
@@ -408,7 +408,7 @@ impl PointSpec {
                     format!("Rx/Ry must lie in (0, 1], got {d}"),
                 ));
             }
-            Spec::Physical(PhysicalCase {
+            CaseForm::Physical(PhysicalCase {
                 lubricant,
                 ph_pa: need(self.ph_gpa, "ph_gpa")? * 1e9,
                 um_m_s: need(self.um_m_s, "um_m_s")?,
@@ -524,7 +524,7 @@ mod tests {
             .cases
             .iter()
             .map(|c| match &c.spec {
-                Spec::Dimensionless(d) => (d.m, d.l),
+                CaseForm::Dimensionless(d) => (d.m, d.l),
                 _ => unreachable!(),
             })
             .collect();
@@ -532,7 +532,7 @@ mod tests {
             ml,
             vec![(100.0, 5.0), (100.0, 10.0), (200.0, 5.0), (200.0, 10.0)]
         );
-        if let Spec::Dimensionless(d) = &s.cases[0].spec {
+        if let CaseForm::Dimensionless(d) = &s.cases[0].spec {
             assert!((d.slip - 0.2).abs() < 1e-15, "S = tau0_hat S-bar");
         }
     }
@@ -552,7 +552,7 @@ mod tests {
     fn a_study_lubricant_becomes_a_datasheet_case() {
         use crate::physics::case::tests::gear_oil;
         let s = Sweep::parse("g.toml", &gear_study("", "temperature_c = 80.0")).unwrap();
-        let Spec::Physical(p) = &s.cases[0].spec else {
+        let CaseForm::Physical(p) = &s.cases[0].spec else {
             panic!("physical")
         };
         assert_eq!(p.lubricant, gear_oil(None));
@@ -562,7 +562,7 @@ mod tests {
             &gear_study("alpha_per_gpa = 25", "temperature_c = 80.0"),
         )
         .unwrap();
-        let Spec::Physical(p) = &s.cases[0].spec else {
+        let CaseForm::Physical(p) = &s.cases[0].spec else {
             panic!("physical")
         };
         assert_eq!(p.lubricant, gear_oil(Some(25.0)));
@@ -578,8 +578,8 @@ mod tests {
             .cases
             .iter()
             .map(|c| match &c.spec {
-                Spec::Physical(p) => p.lubricant.clone(),
-                Spec::Dimensionless(_) => unreachable!(),
+                CaseForm::Physical(p) => p.lubricant.clone(),
+                CaseForm::Dimensionless(_) => unreachable!(),
             })
             .collect();
         assert!(

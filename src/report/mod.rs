@@ -5,28 +5,29 @@
 
 pub mod html;
 
-use crate::paper::{build, target};
-use crate::pipeline::context::{write, Built, Context};
-use crate::pipeline::csv::{records, sci_opt};
+use crate::paper::artefact::{Artefact, Measure, TargetReport};
+use crate::paper::{build, find};
+use crate::pipeline::context::Context;
+use crate::pipeline::csv::{rows, Decimals};
 use crate::pipeline::provenance;
 use html::{csv_table, escape, human};
 use serde::Serialize;
 
 /// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
 /// cannot be built (a solve that fails is a result, not a stop).
-pub fn build_all(names: &[&str], ctx: &Context) -> Result<Vec<Built>, String> {
+pub fn build_all(artefacts: &[&dyn Artefact], ctx: &Context) -> Result<Vec<TargetReport>, String> {
     let mut built = Vec::new();
-    for n in names {
-        built.push(build(n, ctx)?);
+    for a in artefacts {
+        built.push(build(*a, ctx)?);
     }
-    write(ctx, "summary.csv", &summary_csv(&built))?;
+    ctx.write("summary.csv", &summary_csv(&built))?;
     let read = |f: &str| std::fs::read_to_string(ctx.out.join(f)).ok();
-    write(ctx, "index.html", &index_html(&built, &read))?;
+    ctx.write("index.html", &index_html(&built, &read))?;
     Ok(built)
 }
 
 /// A row of `figures/summary.csv`.
-#[derive(Serialize)]
+#[derive(Default, Serialize)]
 struct SummaryRow<'a> {
     target: &'a str,
     cases: usize,
@@ -34,58 +35,57 @@ struct SummaryRow<'a> {
     cached: Option<usize>,
     level: Option<u32>,
     /// RMS of `mu-bar - asinh(tau_c / 5)` over `tau_c >= 100`, mu-bar units.
-    #[serde(serialize_with = "sci_opt")]
     rms_abs_dev: Option<f64>,
-    #[serde(serialize_with = "sci_opt")]
     max_abs_dev: Option<f64>,
-    #[serde(serialize_with = "sci_opt")]
     rms_rel_dev: Option<f64>,
-    #[serde(serialize_with = "sci_opt")]
     max_rel_dev: Option<f64>,
-    #[serde(serialize_with = "sci_opt")]
     fitted_c: Option<f64>,
     /// Bootstrap 95 % interval of `fitted_c`.
-    #[serde(serialize_with = "sci_opt")]
     fitted_c_low: Option<f64>,
-    #[serde(serialize_with = "sci_opt")]
     fitted_c_high: Option<f64>,
-    #[serde(serialize_with = "sci_opt")]
     fitted_c_all: Option<f64>,
     /// The refined formula's cross-validated RMS relative deviation (the `mastercurve` target).
-    #[serde(serialize_with = "sci_opt")]
     refined_rms_rel_dev: Option<f64>,
     /// Wall time, s, to the hundredth.
-    seconds: String,
+    seconds: Decimals<2>,
 }
 
-/// The refined formula's cross-validated RMS for target `name`, from whichever built target
-/// carries the cross-validation.
-fn refined_rms(built: &[Built], name: &str) -> Option<f64> {
+/// The refined formula's cross-validated RMS for target `name`, from whichever target
+/// measured it.
+fn refined_rms(built: &[TargetReport], name: &str) -> Option<f64> {
     built
         .iter()
-        .flat_map(|b| &b.refined)
-        .find(|c| c.figure == name)
-        .map(|c| c.refined_rms_rel_dev)
+        .flat_map(|b| &b.measures)
+        .find_map(|m| match m {
+            Measure::RefinedCrossValidation {
+                target,
+                rms_rel_dev,
+            } if *target == name => Some(*rms_rel_dev),
+            _ => None,
+        })
 }
 
 /// `figures/summary.csv`, one row per target.
-pub fn summary_csv(built: &[Built]) -> String {
-    records(built.iter().map(|b| SummaryRow {
-        target: b.name,
-        cases: b.cases,
-        solved: b.solved,
-        cached: b.cached,
-        level: b.level,
-        rms_abs_dev: b.fit.map(|f| f.rms_abs_dev),
-        max_abs_dev: b.fit.map(|f| f.max_abs_dev),
-        rms_rel_dev: b.fit.map(|f| f.rms_rel_dev),
-        max_rel_dev: b.fit.map(|f| f.max_rel_dev),
-        fitted_c: b.fit.map(|f| f.c),
-        fitted_c_low: b.fit.map(|f| f.c_low),
-        fitted_c_high: b.fit.map(|f| f.c_high),
-        fitted_c_all: b.fit_all.map(|f| f.c),
-        refined_rms_rel_dev: refined_rms(built, b.name),
-        seconds: format!("{:.2}", b.seconds),
+pub fn summary_csv(built: &[TargetReport]) -> String {
+    rows(built.iter().map(|b| {
+        let fit = b.eq13();
+        SummaryRow {
+            target: b.name,
+            cases: b.cases,
+            solved: b.solved,
+            cached: b.cached,
+            level: b.level,
+            rms_abs_dev: fit.map(|f| f.rms_abs_dev),
+            max_abs_dev: fit.map(|f| f.max_abs_dev),
+            rms_rel_dev: fit.map(|f| f.rms_rel_dev),
+            max_rel_dev: fit.map(|f| f.max_rel_dev),
+            fitted_c: fit.map(|f| f.c),
+            fitted_c_low: fit.map(|f| f.c_low),
+            fitted_c_high: fit.map(|f| f.c_high),
+            fitted_c_all: b.eq13_c_all(),
+            refined_rms_rel_dev: refined_rms(built, b.name),
+            seconds: Decimals(b.seconds),
+        }
     }))
 }
 
@@ -95,11 +95,11 @@ const SMALL_TABLE_ROWS: usize = 10;
 /// The mastercurve claim measured, one row per target that has points on it: the absolute
 /// deviation from Eq. (13) first (what the paper's plot shows), the relative one, the fitted
 /// `c` with its bootstrap interval, and the refined formula's cross-validated RMS.
-fn measures_table(built: &[Built]) -> String {
+fn measures_table(built: &[TargetReport]) -> String {
     let rows: Vec<String> = built
         .iter()
         .filter_map(|b| {
-            let f = b.fit?;
+            let f = b.eq13()?;
             let pct = |v: f64| format!("{} %", human(100.0 * v));
             let refined = refined_rms(built, b.name).map(pct).unwrap_or_default();
             Some(format!(
@@ -134,7 +134,7 @@ mastercurve section, fitted without the figure it is tested on.</p>\n\
 }
 
 /// One target's section: claim, result, counts, its SVG (if any) and its table (tables only).
-fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
+fn section(b: &TargetReport, read: &dyn Fn(&str) -> Option<String>) -> String {
     let mut s = format!(
         "<section id=\"{name}\">\n<h2>{title}</h2>\n<dl>\n<dt>paper</dt><dd>{claim}</dd>\n<dt>ours</dt><dd>{ours}</dd>\n",
         name = escape(b.name),
@@ -152,7 +152,7 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
     if let Some(l) = b.level {
         facts.push(format!("level {l}"));
     }
-    if let Some(l) = target(b.name).and_then(|t| t.default_level) {
+    if let Some(l) = find(b.name).and_then(|a| a.default_level()) {
         facts.push(format!(
             "cheapest level with mu-bar within 1 % (repro accuracy): {l}"
         ));
@@ -162,7 +162,7 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
         "<dt>run</dt><dd>{}</dd>\n",
         escape(&facts.join(", "))
     ));
-    if let Some(f) = b.fit {
+    if let Some(f) = b.eq13() {
         s.push_str(&format!(
             "<dt>Eq. 13</dt><dd>{} points with tau_c &ge; 100: {}</dd>\n",
             f.points,
@@ -212,7 +212,7 @@ fn section(b: &Built, read: &dyn Fn(&str) -> Option<String>) -> String {
 }
 
 /// The whole page. `read(name)` returns a file of the output folder (the tables' CSVs).
-pub fn index_html(built: &[Built], read: &dyn Fn(&str) -> Option<String>) -> String {
+pub fn index_html(built: &[TargetReport], read: &dyn Fn(&str) -> Option<String>) -> String {
     let mut page = String::from(
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
 <title>repro: A Generalized Traction Curve for EHL Contacts</title>\n<style>\n\
@@ -267,21 +267,20 @@ mod tests {
     use super::*;
     use crate::paper::mastercurve::fit::Fit;
 
-    fn built(name: &'static str, files: &[&str], fit: Option<Fit>) -> Built {
-        Built {
+    fn built(name: &'static str, files: &[&str], fit: Option<Fit>) -> TargetReport {
+        TargetReport {
             name,
             title: format!("{name} <title>"),
             cases: 3,
             solved: Some(2),
             cached: Some(1),
             level: Some(7),
-            fit,
-            fit_all: None,
             seconds: 1.25,
             files: files.iter().map(|s| s.to_string()).collect(),
             paper_claim: "c = 5".into(),
             ours: "c = 4.93 & more".into(),
-            refined: Vec::new(),
+            headline: None,
+            measures: fit.map(Measure::Eq13).into_iter().collect(),
         }
     }
 

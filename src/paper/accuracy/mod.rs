@@ -22,17 +22,18 @@ pub mod picture;
 
 use crate::paper::figures::line::table3_line_cases;
 use crate::paper::table4::Table4Case;
-use crate::physics::case::{LubricantSpec, Physics, Problem, Spec};
+use crate::physics::case::{CaseForm, LubricantSpec, Physics, Problem};
 use crate::physics::density::DensityLaw;
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::rheology::Rheology;
 use crate::physics::viscosity::ViscosityLaw;
-use crate::pipeline::csv::{num, opt, table};
+use crate::pipeline::csv::{rows, Decimals};
 use crate::pipeline::sweep::{shipped_sweep, PointSpec};
 use crate::solver::line;
 use crate::solver::output::SolveError;
 use crate::solver::point;
+use serde::Serialize;
 use std::time::Instant;
 
 /// Error of `mu-bar` under which a level is taken as good enough for a target.
@@ -203,12 +204,12 @@ pub fn study_cases(with_line: bool) -> Result<Vec<StudyCase>, String> {
         .cases
         .iter()
         .find(|c| match &c.spec {
-            Spec::Physical(p) => {
+            CaseForm::Physical(p) => {
                 (p.rx_m / p.ry_m - 0.2).abs() < 1e-9
                     && (p.ph_pa - 3e9).abs() < 1.0
                     && matches!(&p.lubricant, LubricantSpec::Named { temperature_c, .. } if (*temperature_c - 60.0).abs() < 1e-9)
             }
-            Spec::Dimensionless(_) => false,
+            CaseForm::Dimensionless(_) => false,
         })
         .cloned()
         .ok_or("cases/fig7.toml: no Rx/Ry = 1/5 case at 3 GPa, 60 C")?;
@@ -477,46 +478,69 @@ pub fn run(
         .collect()
 }
 
+/// A row of `figures/accuracy.csv`: one case at one level.
+#[derive(Debug, Default, Serialize)]
+struct LevelRow<'a> {
+    case: &'a str,
+    contact: &'a str,
+    level: u32,
+    points: &'a str,
+    h_central: Option<f64>,
+    mu_bar_sliding: Option<f64>,
+    reference: &'a str,
+    h_central_ref: Option<f64>,
+    mu_bar_ref: Option<f64>,
+    h_central_error: Option<f64>,
+    mu_bar_error: Option<f64>,
+    observed_order_h: Option<f64>,
+    observed_order_mu: Option<f64>,
+    /// Finest-level cycles, or the length of a failure's residual history.
+    cycles: usize,
+    seconds: Decimals<3>,
+    status: String,
+    domain_h_central_change: Option<f64>,
+    domain_mu_bar_change: Option<f64>,
+}
+
 /// `figures/accuracy.csv`: one row per case and level.
 pub fn to_csv(studies: &[CaseStudy]) -> String {
-    let header = [
-        "case",
-        "contact",
-        "level",
-        "points",
-        "h_central",
-        "mu_bar_sliding",
-        "reference",
-        "h_central_ref",
-        "mu_bar_ref",
-        "h_central_error",
-        "mu_bar_error",
-        "observed_order_h",
-        "observed_order_mu",
-        "cycles",
-        "seconds",
-        "status",
-        "domain_h_central_change",
-        "domain_mu_bar_change",
-    ];
-    let mut rows = Vec::new();
+    let mut out = Vec::new();
     for s in studies {
         let domain = s.domain.as_ref().and_then(|d| d.change.as_ref().ok());
+        let r = s.reference;
+        let order = r.and_then(|r| r.order);
         for (run, points) in s.levels.iter().zip(&s.points) {
-            let r = s.reference;
             let e = s.errors(run);
-            let (h, mu, cycles, status) = match &run.outcome {
-                Ok(m) => (
-                    num(m.h_central),
-                    num(m.mu_bar),
-                    m.cycles.to_string(),
-                    "ok".to_string(),
-                ),
-                Err(err) => (
-                    String::new(),
-                    String::new(),
-                    err.residual_history().len().to_string(),
-                    format!(
+            let row = LevelRow {
+                case: s.name,
+                contact: s.kind,
+                level: run.level,
+                points,
+                reference: r.map_or("", |r| r.kind),
+                h_central_ref: r.map(|r| r.h_central),
+                mu_bar_ref: r.map(|r| r.mu_bar),
+                h_central_error: e.map(|e| e.0),
+                mu_bar_error: e.map(|e| e.1),
+                observed_order_h: order.map(|o| o.0),
+                observed_order_mu: order.map(|o| o.1),
+                seconds: Decimals(run.seconds),
+                domain_h_central_change: domain.map(|d| d.0),
+                domain_mu_bar_change: domain.map(|d| d.1),
+                ..LevelRow::default()
+            };
+            out.push(match &run.outcome {
+                Ok(m) => LevelRow {
+                    h_central: Some(m.h_central),
+                    mu_bar_sliding: Some(m.mu_bar),
+                    cycles: m.cycles,
+                    status: "ok".to_string(),
+                    ..row
+                },
+                Err(err) => LevelRow {
+                    cycles: err.residual_history().len(),
+                    // The message's first clause, its numbers included: a study that
+                    // measures grids shows where a film collapsed.
+                    status: format!(
                         "failed: {}",
                         err.to_string()
                             .split(':')
@@ -524,31 +548,12 @@ pub fn to_csv(studies: &[CaseStudy]) -> String {
                             .unwrap_or("failed")
                             .replace(',', ";")
                     ),
-                ),
-            };
-            rows.push(vec![
-                s.name.to_string(),
-                s.kind.to_string(),
-                run.level.to_string(),
-                points.clone(),
-                h,
-                mu,
-                r.map(|r| r.kind.to_string()).unwrap_or_default(),
-                opt(r.map(|r| r.h_central)),
-                opt(r.map(|r| r.mu_bar)),
-                opt(e.map(|e| e.0)),
-                opt(e.map(|e| e.1)),
-                opt(r.and_then(|r| r.order).map(|o| o.0)),
-                opt(r.and_then(|r| r.order).map(|o| o.1)),
-                cycles,
-                format!("{:.3}", run.seconds),
-                status,
-                opt(domain.map(|d| d.0)),
-                opt(domain.map(|d| d.1)),
-            ]);
+                    ..row
+                },
+            });
         }
     }
-    table(&header, &rows)
+    rows(out)
 }
 
 /// The recommended level of a target.
@@ -612,30 +617,25 @@ pub fn recommend(studies: &[CaseStudy], tol: f64) -> Vec<Recommendation> {
         .collect()
 }
 
+/// A row of `figures/accuracy_levels.csv`.
+#[derive(Debug, Default, Serialize)]
+struct RecommendationRow {
+    target: &'static str,
+    deciding_case: &'static str,
+    level: Option<u32>,
+    mu_bar_error: Option<f64>,
+    seconds: Option<Decimals<3>>,
+}
+
 /// `figures/accuracy_levels.csv`: the recommended level per target.
 pub fn recommendations_csv(recs: &[Recommendation]) -> String {
-    let rows: Vec<Vec<String>> = recs
-        .iter()
-        .map(|r| {
-            vec![
-                r.target.to_string(),
-                r.case.to_string(),
-                r.level.map(|l| l.to_string()).unwrap_or_default(),
-                opt(r.mu_error),
-                r.seconds.map(|s| format!("{s:.3}")).unwrap_or_default(),
-            ]
-        })
-        .collect();
-    table(
-        &[
-            "target",
-            "deciding_case",
-            "level",
-            "mu_bar_error",
-            "seconds",
-        ],
-        &rows,
-    )
+    rows(recs.iter().map(|r| RecommendationRow {
+        target: r.target,
+        deciding_case: r.case,
+        level: r.level,
+        mu_bar_error: r.mu_error,
+        seconds: r.seconds.map(Decimals),
+    }))
 }
 
 /// A readable summary.

@@ -6,12 +6,14 @@
 pub mod measured;
 pub mod picture;
 
+use crate::paper::artefact::{Artefact, Measure, TargetReport};
 use crate::paper::fig8::measured::{read_folder, transform, ReducedRow};
-use crate::paper::mastercurve::fit::{fit, mastercurve, FIT_TAU_C_MIN, PAPER_C};
+use crate::paper::mastercurve::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;
-use crate::pipeline::context::{write, Built, Context};
-use crate::pipeline::csv::{num, table};
+use crate::pipeline::context::Context;
+use crate::pipeline::job::Job;
+use serde::Serialize;
 use std::path::Path;
 
 /// Folder of the measured datasets, relative to the working directory (the repository root
@@ -21,29 +23,32 @@ pub const DATA_DIR: &str = "cases/fig8";
 /// What the figure says when it holds no measured point.
 pub const NO_DATA: &str = "No measured dataset is included: cases/fig8/ holds no *.csv file. To add one, write the measured points (each with its source) in the format of docs/measured-data.md to cases/fig8/NAME.csv and run `repro fig8`.";
 
-const HEADER: [&str; 21] = [
-    "dataset",
-    "row",
-    "series",
-    "contact",
-    "ph_pa",
-    "temperature_c",
-    "slip",
-    "m",
-    "l",
-    "s_bar",
-    "eta_bar_ph",
-    "film_formula",
-    "hc_moes",
-    "hc_m",
-    "tau0_pa",
-    "mu",
-    "tau_c_x",
-    "mu_bar_y",
-    "mu_bar_eq13",
-    "rel_dev_eq13",
-    "source",
-];
+/// A row of `fig8.csv`: one measured point, its operating point, what Sec. IV makes of it
+/// and its source.
+#[derive(Debug, Default, Serialize)]
+struct MeasuredRow<'a> {
+    dataset: &'a str,
+    row: usize,
+    series: &'a str,
+    contact: &'static str,
+    ph_pa: f64,
+    temperature_c: f64,
+    slip: f64,
+    m: f64,
+    l: f64,
+    s_bar: f64,
+    eta_bar_ph: f64,
+    film_formula: &'static str,
+    hc_moes: f64,
+    hc_m: f64,
+    tau0_pa: f64,
+    mu: f64,
+    tau_c_x: f64,
+    mu_bar_y: f64,
+    mu_bar_eq13: f64,
+    rel_dev_eq13: f64,
+    source: &'a str,
+}
 
 fn csv_text(rows: &[ReducedRow], files: usize) -> String {
     let comment = if rows.is_empty() {
@@ -54,50 +59,63 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
             rows.len()
         )
     };
-    let cells: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| {
-            let c = &r.reduced.characteristic;
-            let p = &r.row.point;
-            let eq13 = mastercurve(c.tau_c, PAPER_C);
-            vec![
-                r.dataset.clone(),
-                r.row.row.to_string(),
-                r.row.series.clone(),
-                match p.contact {
-                    Contact::Elliptical { .. } => "elliptical".into(),
-                    Contact::Line { .. } => "line".into(),
-                },
-                num(c.ph_pa),
-                num(r.row.temperature_c),
-                num(c.slip),
-                num(c.m),
-                num(c.l),
-                num(c.s_bar),
-                num(c.eta_bar_ph),
-                p.film.name().into(),
-                num(c.hc_moes),
-                num(c.hc_m),
-                num(p.tau0_pa),
-                num(r.row.mu),
-                num(c.tau_c),
-                num(r.reduced.mu_bar),
-                num(eq13),
-                num(r.reduced.mu_bar / eq13 - 1.0),
-                r.row.source.clone(),
-            ]
-        })
-        .collect();
-    comment + &table(&HEADER, &cells)
+    let table = crate::pipeline::csv::rows(rows.iter().map(|r| {
+        let c = &r.reduced.characteristic;
+        let p = &r.row.point;
+        let eq13 = mastercurve(c.tau_c, PAPER_C);
+        MeasuredRow {
+            dataset: &r.dataset,
+            row: r.row.row,
+            series: &r.row.series,
+            contact: match p.contact {
+                Contact::Elliptical { .. } => "elliptical",
+                Contact::Line { .. } => "line",
+            },
+            ph_pa: c.ph_pa,
+            temperature_c: r.row.temperature_c,
+            slip: c.slip,
+            m: c.m,
+            l: c.l,
+            s_bar: c.s_bar,
+            eta_bar_ph: c.eta_bar_ph,
+            film_formula: p.film.name(),
+            hc_moes: c.hc_moes,
+            hc_m: c.hc_m,
+            tau0_pa: p.tau0_pa,
+            mu: r.row.mu,
+            tau_c_x: c.tau_c,
+            mu_bar_y: r.reduced.mu_bar,
+            mu_bar_eq13: eq13,
+            rel_dev_eq13: r.reduced.mu_bar / eq13 - 1.0,
+            source: &r.row.source,
+        }
+    }));
+    comment + &table
 }
 
-/// Builds Fig. 8 from the datasets of [`DATA_DIR`].
-pub fn build(ctx: &Context) -> Result<Built, String> {
-    build_from(Path::new(DATA_DIR), ctx)
+/// Fig. 8: the measured datasets of [`DATA_DIR`], transformed.
+pub struct Fig8;
+
+impl Artefact for Fig8 {
+    fn name(&self) -> &'static str {
+        "fig8"
+    }
+
+    fn describe(&self) -> &'static str {
+        "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)"
+    }
+
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+        Ok(Vec::new())
+    }
+
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        build_from(Path::new(DATA_DIR), ctx)
+    }
 }
 
 /// Builds Fig. 8 from the datasets of `dir`.
-pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
+pub fn build_from(dir: &Path, ctx: &Context) -> Result<TargetReport, String> {
     let lubs = LubricantTable::table1();
     let datasets = read_folder(dir).map_err(|e| e.to_string())?;
     let mut rows = Vec::new();
@@ -108,15 +126,18 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
         .iter()
         .map(|r| (r.reduced.characteristic.tau_c, r.reduced.mu_bar))
         .collect();
-    let fit_range = fit(&points
-        .iter()
-        .copied()
-        .filter(|p| p.0 >= FIT_TAU_C_MIN)
-        .collect::<Vec<_>>());
-    let fit_all = fit(&points);
-    let csv = write(ctx, "fig8.csv", &csv_text(&rows, datasets.len()))?;
-    let svg = picture::svg(&rows, fit_all.map(|f| f.c))?;
-    let picture = write(ctx, "fig8.svg", &svg)?;
+    let measures = Measure::eq13(&points);
+    let fit_range = measures.iter().find_map(|m| match m {
+        Measure::Eq13(f) => Some(*f),
+        _ => None,
+    });
+    let c_all = measures.iter().find_map(|m| match m {
+        Measure::Eq13AllPoints { c } => Some(*c),
+        _ => None,
+    });
+    let csv = ctx.write("fig8.csv", &csv_text(&rows, datasets.len()))?;
+    let svg = picture::svg(&rows, c_all)?;
+    let picture = ctx.write("fig8.svg", &svg)?;
     let ours = if rows.is_empty() {
         (ctx.warn)(format!("fig8: {NO_DATA}"));
         NO_DATA.to_string()
@@ -133,22 +154,19 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<Built, String> {
             "{} measured points from {} file(s); {dev}; c = {:.2} over all",
             rows.len(),
             datasets.len(),
-            fit_all.map(|f| f.c).unwrap_or(f64::NAN)
+            c_all.unwrap_or(f64::NAN)
         )
     };
-    Ok(Built {
-        name: "fig8",
-        title: "Fig. 8: measured friction transformed to (tau_c, mu-bar)".into(),
-        cases: rows.len(),
-        solved: None,
-        cached: None,
-        level: None,
-        fit: fit_range,
-        fit_all,
-        seconds: 0.0,
-        files: vec![csv, picture],
+    Ok(TargetReport {
         paper_claim: "measured two-disc friction (Evans and Johnson; Klein-Meuleman, Lubrecht and ten Napel) falls rather closely on Eq. (13)".into(),
         ours,
-        refined: Vec::new(),
+        headline: fit_range.as_ref().map(|f| f.describe()),
+        measures,
+        ..TargetReport::emitted(
+            "fig8",
+            "Fig. 8: measured friction transformed to (tau_c, mu-bar)",
+            rows.len(),
+            vec![csv, picture],
+        )
     })
 }

@@ -3,14 +3,18 @@
 
 use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
 use crate::paper::mastercurve::oracle::line_flat;
-use crate::physics::case::{Physics, Spec};
+use crate::physics::case::{CaseForm, Physics};
 use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::cache::Stamp;
-use crate::pipeline::csv::{num, table};
-use crate::pipeline::run::{line_key, run_jobs, Job, Outcome, RunProgress, Store, Work};
+use crate::pipeline::csv::rows;
+use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
+use crate::pipeline::job::{Job, Solve};
+use crate::pipeline::keys::line_key;
+use crate::pipeline::outcome::CaseOutcome;
 use crate::pipeline::sweep::shipped_sweep;
 use crate::solver::line::Params;
+use serde::Serialize;
 
 /// The five Table 3 cases as line contacts, in the order of the table, with the physics of
 /// Figs. 4-7. The rows are read from the shipped `cases/fig7.toml` (its `D = 1/2` block), the
@@ -20,7 +24,7 @@ pub fn table3_line_cases() -> Result<(Vec<LinePhysicalCase>, Physics), String> {
     let lubs = LubricantTable::table1();
     let mut out: Vec<LinePhysicalCase> = Vec::new();
     for c in &sweep.cases {
-        if let Spec::Physical(ph) = &c.spec {
+        if let CaseForm::Physical(ph) = &c.spec {
             let line = LinePhysicalCase::from_point_case(ph, &lubs)
                 .map_err(|e| format!("cases/fig7.toml: {e}"))?;
             if !out.contains(&line) {
@@ -45,7 +49,7 @@ pub struct LineRun {
     /// Its problem (groups, `tau_c`).
     pub problem: LineProblem,
     /// Solved or failed.
-    pub outcome: Outcome,
+    pub outcome: CaseOutcome,
     /// Its cache key.
     pub key: String,
     /// How its result was made (`None` for cache entries written before stamps).
@@ -76,7 +80,7 @@ pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem
                     case.slip,
                     case.tau0_pa / 1e6
                 ),
-                work: Work::Line {
+                solve: Solve::Line {
                     problem: problem.clone(),
                     params,
                 },
@@ -92,7 +96,7 @@ pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem
 pub fn solve_table3(
     target: &str,
     level: u32,
-    store: Store,
+    store: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
 ) -> Result<Vec<LineRun>, String> {
@@ -113,79 +117,72 @@ pub fn solve_table3(
         .collect())
 }
 
-/// `fig7-line.csv`: one row per line contact, the columns of the point-contact CSV that apply.
+/// A row of `fig7-line.csv`: the columns of the point-contact CSV that apply.
+#[derive(Debug, Default, Serialize)]
+struct LineRow {
+    case: usize,
+    ph_gpa: f64,
+    um_m_s: f64,
+    slip: f64,
+    tau0_mpa: f64,
+    level: u32,
+    m: f64,
+    l: f64,
+    s_bar: f64,
+    alpha_bar: f64,
+    tau_c: f64,
+    mu_bar_eq13: f64,
+    hc: Option<f64>,
+    hc_moes: Option<f64>,
+    hmin_moes: Option<f64>,
+    mu_bar_sliding: Option<f64>,
+    mu_bar_flat: Option<f64>,
+    rel_dev_eq13: Option<f64>,
+    rel_dev_flat: Option<f64>,
+    cycles: Option<usize>,
+    status: String,
+}
+
+/// `fig7-line.csv`: one row per line contact solved at `level`.
 pub fn line_csv(runs: &[LineRun], level: u32) -> String {
-    let header = [
-        "case",
-        "ph_gpa",
-        "um_m_s",
-        "slip",
-        "tau0_mpa",
-        "level",
-        "m",
-        "l",
-        "s_bar",
-        "alpha_bar",
-        "tau_c",
-        "mu_bar_eq13",
-        "hc",
-        "hc_moes",
-        "hmin_moes",
-        "mu_bar_sliding",
-        "mu_bar_flat",
-        "rel_dev_eq13",
-        "rel_dev_flat",
-        "cycles",
-        "status",
-    ];
-    let rows: Vec<Vec<String>> = runs
-        .iter()
-        .enumerate()
-        .map(|(i, r)| {
-            let g = &r.problem.groups;
-            let tau_c = r.problem.tau_c();
-            let eq13 = mastercurve(tau_c, PAPER_C);
-            let mut row = vec![
-                (i + 1).to_string(),
-                num(r.case.ph_pa / 1e9),
-                num(r.case.um_m_s),
-                num(r.case.slip),
-                num(r.case.tau0_pa / 1e6),
-                level.to_string(),
-                num(g.m),
-                num(g.l),
-                num(g.s_bar),
-                num(g.alpha_bar),
-                num(tau_c),
-                num(eq13),
-            ];
-            match &r.outcome {
-                Outcome::Solved(s) => {
-                    let flat = line_flat(&r.problem, s.h_central);
-                    row.extend([
-                        num(s.h_central),
-                        num(s.hc_moes),
-                        num(s.hmin_moes),
-                        num(s.mu_bar_sliding),
-                        num(flat),
-                        num(s.mu_bar_sliding / eq13 - 1.0),
-                        num(s.mu_bar_sliding / flat - 1.0),
-                        s.cycles.to_string(),
-                        "solved".into(),
-                    ])
-                }
-                Outcome::Failed { .. } => {
-                    row.extend(std::iter::repeat_n(String::new(), 8));
-                    row.push(format!(
-                        "failed: {}",
-                        r.outcome.failure_kind().unwrap_or("failed")
-                    ));
+    rows(runs.iter().enumerate().map(|(i, r)| {
+        let g = &r.problem.groups;
+        let tau_c = r.problem.tau_c();
+        let eq13 = mastercurve(tau_c, PAPER_C);
+        let row = LineRow {
+            case: i + 1,
+            ph_gpa: r.case.ph_pa / 1e9,
+            um_m_s: r.case.um_m_s,
+            slip: r.case.slip,
+            tau0_mpa: r.case.tau0_pa / 1e6,
+            level,
+            m: g.m,
+            l: g.l,
+            s_bar: g.s_bar,
+            alpha_bar: g.alpha_bar,
+            tau_c,
+            mu_bar_eq13: eq13,
+            status: r.outcome.status(),
+            ..LineRow::default()
+        };
+        match r.outcome.solved() {
+            Some(s) => {
+                let flat = line_flat(&r.problem, s.h_central);
+                LineRow {
+                    hc: Some(s.h_central),
+                    hc_moes: Some(s.hc_moes),
+                    hmin_moes: Some(s.hmin_moes),
+                    mu_bar_sliding: Some(s.mu_bar_sliding),
+                    mu_bar_flat: Some(flat),
+                    rel_dev_eq13: Some(s.mu_bar_sliding / eq13 - 1.0),
+                    rel_dev_flat: Some(s.mu_bar_sliding / flat - 1.0),
+                    cycles: Some(s.cycles),
+                    ..row
                 }
             }
-            row
-        })
-        .collect();
-    table(&header, &rows)
+            None => row,
+        }
+    }))
 }
 
 /// The solved line contacts as `(tau_c, sliding mu-bar)`.
@@ -193,7 +190,7 @@ pub fn line_points(runs: &[LineRun]) -> Vec<(f64, f64)> {
     runs.iter()
         .filter_map(|r| {
             r.outcome
-                .record()
+                .solved()
                 .map(|s| (r.problem.tau_c(), s.mu_bar_sliding))
         })
         .collect()

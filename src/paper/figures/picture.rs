@@ -4,8 +4,8 @@
 
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::mastercurve;
-use crate::physics::case::Spec;
-use crate::pipeline::run::CaseRun;
+use crate::physics::case::CaseForm;
+use crate::pipeline::executor::PointRun;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
 
 const MARKERS: [Marker; 5] = [
@@ -18,7 +18,7 @@ const MARKERS: [Marker; 5] = [
 
 /// The series key of a case: `L` for the Barus sweep, temperature for the lubricant sweeps,
 /// `Rx/Ry` for Fig. 7.
-fn series_key(name: &str, run: &CaseRun) -> String {
+fn series_key(name: &str, run: &PointRun) -> String {
     let g = &run.problem.groups;
     match name {
         "fig1" | "fig2" | "fig3" => format!("L = {}", g.l),
@@ -33,11 +33,11 @@ fn series_key(name: &str, run: &CaseRun) -> String {
             }
         ),
         _ => match &run.case.spec {
-            Spec::Physical(p) => match p.lubricant.temperature_c() {
+            CaseForm::Physical(p) => match p.lubricant.temperature_c() {
                 Some(t) => format!("{t} °C"),
                 None => "given lubricant".into(),
             },
-            Spec::Dimensionless(_) => "dimensionless".into(),
+            CaseForm::Dimensionless(_) => "dimensionless".into(),
         },
     }
 }
@@ -47,8 +47,8 @@ fn series_key(name: &str, run: &CaseRun) -> String {
 pub fn svg(
     name: &str,
     title: &str,
-    runs: &[CaseRun],
-    xy: &dyn Fn(&CaseRun) -> Option<(f64, f64)>,
+    runs: &[PointRun],
+    xy: &dyn Fn(&PointRun) -> Option<(f64, f64)>,
     severity: bool,
     total: bool,
     extra: &[Series],
@@ -79,7 +79,7 @@ pub fn svg(
             ..e.clone()
         });
     }
-    let failed = runs.iter().filter(|r| r.record().is_none()).count();
+    let failed = runs.iter().filter(|r| r.solved().is_none()).count();
     let xs: Vec<f64> = series
         .iter()
         .flat_map(|s| s.points.iter().map(|p| p.0))

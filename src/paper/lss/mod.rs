@@ -11,18 +11,20 @@
 
 pub mod form;
 
-use crate::paper::figures::{run_sweep, study_jobs};
+use crate::paper::artefact::{Artefact, TargetReport};
+use crate::paper::figures::{run_sweep, study_jobs, FIG4};
 use crate::paper::lss::form::{fit, saturated, FormFit, Point};
 use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
 use crate::paper::picture::{mastercurve as eq13_curve, MU_BAR, TAU_C};
-use crate::paper::target as registry_target;
-use crate::physics::case::{Case, Spec};
+use crate::physics::case::{Case, CaseForm};
 use crate::physics::rheology::{LimitingShearStress, Rheology};
-use crate::pipeline::context::{write, Built, Context, SAMPLED_ABOVE};
-use crate::pipeline::csv::{num, opt, table};
-use crate::pipeline::run::{CaseRun, Job};
+use crate::pipeline::context::Context;
+use crate::pipeline::csv::rows;
+use crate::pipeline::executor::PointRun;
+use crate::pipeline::job::Job;
 use crate::pipeline::sweep::{shipped_sweep, Sweep};
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series};
+use serde::Serialize;
 
 /// The `Lambda-bar = Lambda p_H / tau0` of the target: a limit well below the Eyring
 /// friction of most cases (5) up to one that binds only the largest `tau_c` (40; the Eyring
@@ -34,9 +36,8 @@ pub const LAMBDA_BARS: [f64; 4] = [5.0, 10.0, 20.0, 40.0];
 /// where a limit far below them would make the perturbation conductances explode.
 pub const TAU_L0_OVER_TAU0: f64 = 1.0;
 
-/// The Eyring sweep (the registry's Fig. 4, whose cache entries it shares).
-const SWEEP: &str = "fig4";
-const EYRING_TARGET: &str = "fig4";
+/// The Eyring sweep: Fig. 4's, whose cache entries it shares.
+const SWEEP: &str = FIG4.sweep;
 
 /// Hertzian area over load of a circular contact: `A / W = pi / (2 pi / 3)`.
 const HERTZ_AREA_OVER_LOAD: f64 = 1.5;
@@ -44,7 +45,7 @@ const HERTZ_AREA_OVER_LOAD: f64 = 1.5;
 /// A case of the Eyring sweep with the limit of `lambda_bar` (`Lambda = Lambda-bar tau0 /
 /// p_H`, `tau_L0 = TAU_L0_OVER_TAU0 tau0`). The sweep's cases are physical.
 fn limited(case: &Case, lambda_bar: f64) -> Result<Case, String> {
-    let Spec::Physical(p) = &case.spec else {
+    let CaseForm::Physical(p) = &case.spec else {
         return Err(format!(
             "cases/{SWEEP}.toml: the lss target needs physical cases"
         ));
@@ -62,11 +63,7 @@ fn limited(case: &Case, lambda_bar: f64) -> Result<Case, String> {
 /// 1-based case numbers in `cases/fig4.toml`.
 fn eyring_selection(ctx: &Context) -> Result<(Sweep, Vec<usize>), String> {
     let mut sweep = shipped_sweep(SWEEP).map_err(|e| e.to_string())?;
-    let stride = if ctx.stride > 1 && sweep.cases.len() > SAMPLED_ABOVE {
-        ctx.stride
-    } else {
-        1
-    };
+    let stride = ctx.stride_for(sweep.cases.len());
     let numbers: Vec<usize> = (0..sweep.cases.len())
         .step_by(stride)
         .map(|i| i + 1)
@@ -115,25 +112,21 @@ fn limited_sweeps(eyring: &Sweep, ctx: &Context) -> Result<Vec<(f64, Sweep, Vec<
         .collect()
 }
 
+/// Fig. 4's level.
 fn default_level() -> Option<u32> {
-    registry_target(EYRING_TARGET).and_then(|t| t.default_level)
+    Some(FIG4.level)
 }
 
 /// The context without sampling: the target samples its sweeps itself.
-fn unsampled<'a>(ctx: &'a Context<'a>) -> Context<'a> {
+fn unsampled<'a>(ctx: &Context<'a>) -> Context<'a> {
     Context {
-        out: ctx.out.clone(),
-        cache: ctx.cache.clone(),
-        level: ctx.level,
-        progress: ctx.progress,
-        warn: ctx.warn,
         stride: 1,
-        offline: ctx.offline,
+        ..ctx.clone()
     }
 }
 
 /// Every solve of the target in the context: the Eyring cases (Fig. 4's) and the limited ones.
-pub fn jobs(ctx: &Context) -> Result<Vec<Job>, String> {
+fn jobs(ctx: &Context) -> Result<Vec<Job>, String> {
     let (eyring, _) = eyring_selection(ctx)?;
     let plain = unsampled(ctx);
     let mut all = study_jobs(&eyring, default_level(), &plain)?;
@@ -158,10 +151,10 @@ struct Row {
 
 /// The rows of the limited runs, each `(Lambda-bar, runs, which of the Eyring selection)`,
 /// with the Eyring runs and the selection's case numbers.
-fn rows(
-    eyring: &[CaseRun],
+fn pair_with_eyring(
+    eyring: &[PointRun],
     numbers: &[usize],
-    limited: &[(f64, Vec<CaseRun>, Vec<usize>)],
+    limited: &[(f64, Vec<PointRun>, Vec<usize>)],
 ) -> Vec<Row> {
     let mut rows = Vec::new();
     for (lb, runs, picked) in limited {
@@ -172,17 +165,14 @@ fn rows(
                 .shear
                 .friction_bound(HERTZ_AREA_OVER_LOAD)
                 .unwrap_or(f64::NAN);
-            let status = match l.failure_kind() {
-                None => "solved".to_string(),
-                Some(k) => format!("failed: {k}"),
-            };
+            let status = l.outcome.status();
             rows.push(Row {
                 lambda_bar: *lb,
                 case: numbers[i],
                 tau_c: l.problem.tau_c(),
                 alpha_bar: l.problem.groups.alpha_bar,
-                eyring: e.record().map(|r| r.mu_bar_sliding),
-                limited: l.record().map(|r| r.mu_bar_sliding),
+                eyring: e.solved().map(|r| r.mu_bar_sliding),
+                limited: l.solved().map(|r| r.mu_bar_sliding),
                 mu_s,
                 status,
             });
@@ -209,63 +199,63 @@ fn points(rows: &[Row], own: bool) -> Vec<Point> {
         .collect()
 }
 
-fn cases_csv(rows: &[Row], form_eq13: Option<FormFit>, form_own: Option<FormFit>) -> String {
-    let header = [
-        "lambda_bar",
-        "tau_l0_over_tau0",
-        "case",
-        "tau_c",
-        "alpha_bar",
-        "mu_bar_eyring",
-        "mu_bar_sliding",
-        "mu_bar_saturated",
-        "mu_bar_eq13",
-        "mu_bar_form_eq13",
-        "mu_bar_form_own",
-        "status",
-    ];
-    let cells = rows.iter().map(|r| {
+/// A row of `lss.csv`: one limited case beside its Eyring twin and the forms' predictions.
+#[derive(Debug, Default, Serialize)]
+struct CaseRow<'a> {
+    lambda_bar: f64,
+    tau_l0_over_tau0: f64,
+    case: usize,
+    tau_c: f64,
+    alpha_bar: f64,
+    mu_bar_eyring: Option<f64>,
+    mu_bar_sliding: Option<f64>,
+    mu_bar_saturated: f64,
+    mu_bar_eq13: f64,
+    mu_bar_form_eq13: Option<f64>,
+    mu_bar_form_own: Option<f64>,
+    status: &'a str,
+}
+
+fn cases_csv(cases: &[Row], form_eq13: Option<FormFit>, form_own: Option<FormFit>) -> String {
+    rows(cases.iter().map(|r| {
         let eq13 = mastercurve(r.tau_c, PAPER_C);
-        let by_eq13 = form_eq13.map(|f| saturated(eq13, r.mu_s, f.n));
-        let by_own = form_own.and_then(|f| r.eyring.map(|e| saturated(e, r.mu_s, f.n)));
-        vec![
-            num(r.lambda_bar),
-            num(TAU_L0_OVER_TAU0),
-            r.case.to_string(),
-            num(r.tau_c),
-            num(r.alpha_bar),
-            opt(r.eyring),
-            opt(r.limited),
-            num(r.mu_s),
-            num(eq13),
-            opt(by_eq13),
-            opt(by_own),
-            r.status.clone(),
-        ]
-    });
-    table(&header, cells)
+        CaseRow {
+            lambda_bar: r.lambda_bar,
+            tau_l0_over_tau0: TAU_L0_OVER_TAU0,
+            case: r.case,
+            tau_c: r.tau_c,
+            alpha_bar: r.alpha_bar,
+            mu_bar_eyring: r.eyring,
+            mu_bar_sliding: r.limited,
+            mu_bar_saturated: r.mu_s,
+            mu_bar_eq13: eq13,
+            mu_bar_form_eq13: form_eq13.map(|f| saturated(eq13, r.mu_s, f.n)),
+            mu_bar_form_own: form_own.and_then(|f| r.eyring.map(|e| saturated(e, r.mu_s, f.n))),
+            status: &r.status,
+        }
+    }))
+}
+
+/// A row of `lss-fit.csv`: a form's fitted exponent and scatter.
+#[derive(Debug, Default, Serialize)]
+struct FitRow<'a> {
+    mu_e: &'a str,
+    points: Option<usize>,
+    n: Option<f64>,
+    rms_abs_dev: Option<f64>,
+    max_abs_dev: Option<f64>,
+    rms_rel_dev: Option<f64>,
 }
 
 fn fit_csv(forms: &[(&str, Option<FormFit>)]) -> String {
-    let header = [
-        "mu_e",
-        "points",
-        "n",
-        "rms_abs_dev",
-        "max_abs_dev",
-        "rms_rel_dev",
-    ];
-    let cells = forms.iter().map(|(name, f)| {
-        vec![
-            name.to_string(),
-            f.map_or(String::new(), |f| f.points.to_string()),
-            opt(f.map(|f| f.n)),
-            opt(f.map(|f| f.rms_abs_dev)),
-            opt(f.map(|f| f.max_abs_dev)),
-            opt(f.map(|f| f.rms_rel_dev)),
-        ]
-    });
-    table(&header, cells)
+    rows(forms.iter().map(|(name, f)| FitRow {
+        mu_e: name,
+        points: f.map(|f| f.points),
+        n: f.map(|f| f.n),
+        rms_abs_dev: f.map(|f| f.rms_abs_dev),
+        max_abs_dev: f.map(|f| f.max_abs_dev),
+        rms_rel_dev: f.map(|f| f.rms_rel_dev),
+    }))
 }
 
 /// `lss.svg`: every limited case against `tau_c`, one series per `Lambda-bar`, with the
@@ -321,8 +311,28 @@ fn svg(rows: &[Row], form: Option<FormFit>) -> Result<Option<String>, String> {
     render_svg(&figure).map(Some).map_err(|e| e.to_string())
 }
 
-/// Builds the target.
-pub fn build(ctx: &Context) -> Result<Built, String> {
+/// The `lss` target.
+pub struct Lss;
+
+impl Artefact for Lss {
+    fn name(&self) -> &'static str {
+        "lss"
+    }
+
+    fn describe(&self) -> &'static str {
+        "Beyond the paper: Fig. 4's cases with a limiting shear stress at Lambda-bar 5-40, and the form of their curve"
+    }
+
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+        jobs(ctx)
+    }
+
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        build(ctx)
+    }
+}
+
+fn build(ctx: &Context) -> Result<TargetReport, String> {
     let (eyring_sweep, numbers) = eyring_selection(ctx)?;
     let plain = unsampled(ctx);
     let (eyring, level) = run_sweep("lss", &eyring_sweep, default_level(), &plain)?;
@@ -330,19 +340,18 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
     for (lb, s, picked) in limited_sweeps(&eyring_sweep, ctx)? {
         limited.push((lb, run_sweep("lss", &s, default_level(), &plain)?.0, picked));
     }
-    let rows = rows(&eyring, &numbers, &limited);
+    let rows = pair_with_eyring(&eyring, &numbers, &limited);
     let form_eq13 = fit(&points(&rows, false));
     let form_own = fit(&points(&rows, true));
     let mut files = vec![
-        write(ctx, "lss.csv", &cases_csv(&rows, form_eq13, form_own))?,
-        write(
-            ctx,
+        ctx.write("lss.csv", &cases_csv(&rows, form_eq13, form_own))?,
+        ctx.write(
             "lss-fit.csv",
             &fit_csv(&[("eq13", form_eq13), ("own_eyring", form_own)]),
         )?,
     ];
     if let Some(svg) = svg(&rows, form_eq13)? {
-        files.push(write(ctx, "lss.svg", &svg)?);
+        files.push(ctx.write("lss.svg", &svg)?);
     }
     let solved = rows.iter().filter(|r| r.limited.is_some()).count();
     let runs = eyring.iter().chain(limited.iter().flat_map(|(_, r, _)| r));
@@ -365,21 +374,18 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
         describe(form_eq13),
         describe(form_own),
     );
-    Ok(Built {
-        name: "lss",
-        title: "Beyond the paper: friction with a limiting shear stress, and the form of its curve"
-            .into(),
-        cases: rows.len() + eyring.len(),
-        solved: Some(solved + eyring.iter().filter(|r| r.record().is_some()).count()),
+    Ok(TargetReport {
+        solved: Some(solved + eyring.iter().filter(|r| r.solved().is_some()).count()),
         cached: Some(cached),
         level: Some(level),
-        fit: None,
-        fit_all: None,
-        seconds: 0.0,
-        files,
         paper_claim: "future work (Conclusions): with a limiting shear stress one may expect a single curve, of a different form".into(),
         ours,
-        refined: Vec::new(),
+        ..TargetReport::emitted(
+            "lss",
+            "Beyond the paper: friction with a limiting shear stress, and the form of its curve",
+            rows.len() + eyring.len(),
+            files,
+        )
     })
 }
 
@@ -389,7 +395,7 @@ mod tests {
     use crate::physics::case::Problem;
     use crate::physics::lubricant::LubricantTable;
     use crate::physics::rheology::ShearLaw;
-    use crate::pipeline::run::case_key;
+    use crate::pipeline::keys::case_key;
     use crate::solver::point::Params;
 
     #[test]

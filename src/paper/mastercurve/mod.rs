@@ -12,29 +12,24 @@ pub mod oracle;
 pub mod picture;
 pub mod refined;
 
+use crate::paper::artefact::{Artefact, Measure, TargetReport, LINE_LEVEL};
 use crate::paper::figures::line::solve_table3;
-use crate::paper::figures::run_sweep;
+use crate::paper::figures::{SweepFigure, FIG3, FIG4, FIG5, FIG6, FIG7};
 use crate::paper::mastercurve::fit::{fit, mastercurve, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::mastercurve::oracle::{line_flat, point_flat};
 use crate::paper::mastercurve::refined::{
     band95, cross_validated, fit as fit_refined, rms_rel, Features, FigureCheck, Refined, Sample,
 };
-use crate::paper::target as registry_target;
 use crate::physics::flat_film::alpha_e;
-use crate::pipeline::context::{write, Built, Context, LINE_LEVEL};
-use crate::pipeline::csv::{num, opt, table};
-use crate::pipeline::run::RunProgress;
-use crate::pipeline::sweep::shipped_sweep;
+use crate::pipeline::context::Context;
+use crate::pipeline::csv::rows;
+use crate::pipeline::executor::RunProgress;
+use crate::pipeline::job::Job;
 use picture::CasePoint;
+use serde::Serialize;
 
-/// The figures whose cases the formula is fitted on, with their sweeps.
-pub(super) const FIGURES: [(&str, &str); 5] = [
-    ("fig3", "fig1-3"),
-    ("fig4", "fig4"),
-    ("fig5", "fig5"),
-    ("fig6", "fig6"),
-    ("fig7", "fig7"),
-];
+/// The figures whose cases the formula is fitted on.
+const FIGURES: [&SweepFigure; 5] = [&FIG3, &FIG4, &FIG5, &FIG6, &FIG7];
 
 /// One case of the fit, with what the CSV reports of it.
 struct Row {
@@ -50,12 +45,11 @@ struct Row {
 
 fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
     let mut rows = Vec::new();
-    for (figure, sweep_name) in FIGURES {
-        let sweep = shipped_sweep(sweep_name).map_err(|e| e.to_string())?;
-        let default_level = registry_target(figure).and_then(|t| t.default_level);
-        let (runs, _) = run_sweep("mastercurve", &sweep, default_level, ctx)?;
+    for fig in FIGURES {
+        let figure = fig.name;
+        let (runs, _) = fig.run("mastercurve", ctx)?;
         for (i, r) in runs.iter().enumerate() {
-            let (Some(rec), tau_c) = (r.record(), r.problem.tau_c()) else {
+            let (Some(rec), tau_c) = (r.solved(), r.problem.tau_c()) else {
                 continue;
             };
             if tau_c < FIT_TAU_C_MIN {
@@ -78,9 +72,15 @@ fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
         }
     }
     let progress = |p: RunProgress| (ctx.progress)("mastercurve", p);
-    let line = solve_table3("mastercurve", LINE_LEVEL, ctx.store(), &progress, ctx.warn)?;
+    let line = solve_table3(
+        "mastercurve",
+        LINE_LEVEL,
+        ctx.cache_policy(),
+        &progress,
+        ctx.warn,
+    )?;
     for (i, r) in line.iter().enumerate() {
-        let (Some(s), tau_c) = (r.outcome.record(), r.problem.tau_c()) else {
+        let (Some(s), tau_c) = (r.outcome.solved(), r.problem.tau_c()) else {
             continue;
         };
         if tau_c < FIT_TAU_C_MIN {
@@ -104,53 +104,84 @@ fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
     Ok(rows)
 }
 
-fn cases_csv(rows: &[Row], all: Option<&Refined>, cv: &[Option<f64>]) -> String {
-    let header = [
-        "figure",
-        "contact",
-        "case",
-        "tau_c",
-        "m",
-        "l",
-        "alpha_e",
-        "mu_bar_sliding",
-        "mu_bar_eq13",
-        "mu_bar_flat",
-        "flat_nominal",
-        "film_nominal",
-        "ln_l",
-        "mu_bar_refined",
-        "mu_bar_refined_cv",
-        "rel_dev_eq13",
-        "rel_dev_flat",
-        "rel_dev_refined_cv",
-    ];
-    let cells = rows.iter().zip(cv).map(|(r, cv)| {
+/// A row of `mastercurve.csv`: one case on Eq. (13), the flat film and the refined formula.
+#[derive(Debug, Default, Serialize)]
+struct CaseRow {
+    figure: &'static str,
+    contact: &'static str,
+    case: usize,
+    tau_c: f64,
+    m: f64,
+    l: f64,
+    alpha_e: f64,
+    mu_bar_sliding: f64,
+    mu_bar_eq13: f64,
+    mu_bar_flat: f64,
+    flat_nominal: f64,
+    film_nominal: f64,
+    ln_l: f64,
+    mu_bar_refined: Option<f64>,
+    mu_bar_refined_cv: Option<f64>,
+    rel_dev_eq13: f64,
+    rel_dev_flat: f64,
+    rel_dev_refined_cv: Option<f64>,
+}
+
+fn cases_csv(cases: &[Row], all: Option<&Refined>, cv: &[Option<f64>]) -> String {
+    rows(cases.iter().zip(cv).map(|(r, cv)| {
         let f = &r.sample.features;
         let mu = r.sample.mu_bar;
         let eq13 = mastercurve(r.tau_c, PAPER_C);
-        vec![
-            r.sample.figure.to_string(),
-            r.contact.to_string(),
-            r.case.to_string(),
-            num(r.tau_c),
-            num(r.m),
-            num(r.l),
-            num(r.alpha_e),
-            num(mu),
-            num(eq13),
-            num(r.flat),
-            num(f.flat_nominal),
-            num(f.film_nominal),
-            num(f.ln_l),
-            opt(all.map(|a| a.predict(f))),
-            opt(*cv),
-            num(mu / eq13 - 1.0),
-            num(mu / r.flat - 1.0),
-            opt(cv.map(|p| mu / p - 1.0)),
-        ]
-    });
-    table(&header, cells)
+        CaseRow {
+            figure: r.sample.figure,
+            contact: r.contact,
+            case: r.case,
+            tau_c: r.tau_c,
+            m: r.m,
+            l: r.l,
+            alpha_e: r.alpha_e,
+            mu_bar_sliding: mu,
+            mu_bar_eq13: eq13,
+            mu_bar_flat: r.flat,
+            flat_nominal: f.flat_nominal,
+            film_nominal: f.film_nominal,
+            ln_l: f.ln_l,
+            mu_bar_refined: all.map(|a| a.predict(f)),
+            mu_bar_refined_cv: *cv,
+            rel_dev_eq13: mu / eq13 - 1.0,
+            rel_dev_flat: mu / r.flat - 1.0,
+            rel_dev_refined_cv: cv.map(|p| mu / p - 1.0),
+        }
+    }))
+}
+
+/// A row of `mastercurve-fit.csv`: the refined formula fitted on all cases, or on all but a
+/// figure's and tested on them.
+#[derive(Debug, Default, Serialize)]
+struct FitRow {
+    fitted_on: String,
+    tested_on: &'static str,
+    points_tested: Option<usize>,
+    a: Option<f64>,
+    b: Option<f64>,
+    c: Option<f64>,
+    d: Option<f64>,
+    refined_rms_rel_dev: Option<f64>,
+    band95: Option<f64>,
+}
+
+impl FitRow {
+    /// The row of `refined`'s coefficients.
+    fn with(refined: Option<&Refined>) -> Self {
+        let k = |i: usize| refined.map(|r| r.coefficients[i]);
+        FitRow {
+            a: k(0),
+            b: k(1),
+            c: k(2),
+            d: k(3),
+            ..FitRow::default()
+        }
+    }
 }
 
 fn fit_csv(
@@ -158,45 +189,53 @@ fn fit_csv(
     band: Option<f64>,
     held_out: &[(FigureCheck, Option<Refined>)],
 ) -> String {
-    let header = [
-        "fitted_on",
-        "tested_on",
-        "points_tested",
-        "a",
-        "b",
-        "c",
-        "d",
-        "refined_rms_rel_dev",
-        "band95",
-    ];
-    let coef = |r: Option<&Refined>| -> Vec<String> {
-        (0..4).map(|i| opt(r.map(|r| r.coefficients[i]))).collect()
+    let everything = FitRow {
+        fitted_on: "all".into(),
+        band95: band,
+        ..FitRow::with(all)
     };
-    let mut rows = vec![[
-        vec!["all".to_string(), String::new(), String::new()],
-        coef(all),
-        vec![String::new(), opt(band)],
-    ]
-    .concat()];
-    for (c, r) in held_out {
-        rows.push(
-            [
-                vec![
-                    format!("all but {}", c.figure),
-                    c.figure.to_string(),
-                    c.points.to_string(),
-                ],
-                coef(r.as_ref()),
-                vec![num(c.refined_rms_rel_dev), String::new()],
-            ]
-            .concat(),
-        );
-    }
-    table(&header, rows)
+    let each = held_out.iter().map(|(c, r)| FitRow {
+        fitted_on: format!("all but {}", c.figure),
+        tested_on: c.figure,
+        points_tested: Some(c.points),
+        refined_rms_rel_dev: Some(c.refined_rms_rel_dev),
+        ..FitRow::with(r.as_ref())
+    });
+    rows(std::iter::once(everything).chain(each))
 }
 
-/// Builds the target.
-pub fn build(ctx: &Context) -> Result<Built, String> {
+/// The `mastercurve` target.
+pub struct Mastercurve;
+
+impl Artefact for Mastercurve {
+    fn name(&self) -> &'static str {
+        "mastercurve"
+    }
+
+    fn describe(&self) -> &'static str {
+        "Beyond the paper: every case of Figs. 3-7 on Eq. (13) and on a refined formula fitted to them, cross-validated by figure"
+    }
+
+    /// The figures' own cases, each solve once.
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+        let mut seen = std::collections::HashSet::new();
+        let mut all: Vec<Job> = Vec::new();
+        for fig in FIGURES {
+            for job in fig.jobs(ctx)? {
+                if seen.insert(job.key.clone()) {
+                    all.push(job);
+                }
+            }
+        }
+        Ok(all)
+    }
+
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+        build(ctx)
+    }
+}
+
+fn build(ctx: &Context) -> Result<TargetReport, String> {
     let rows = collect(ctx)?;
     let samples: Vec<Sample> = rows.iter().map(|r| r.sample).collect();
     let all = fit_refined(&samples);
@@ -205,11 +244,12 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
     let band = band95(pairs());
     let held_out: Vec<(FigureCheck, Option<Refined>)> = FIGURES
         .iter()
-        .filter_map(|(figure, _)| {
+        .filter_map(|fig| {
+            let figure = fig.name;
             let mine = || {
                 cv.iter()
                     .zip(&samples)
-                    .filter(|(_, s)| s.figure == *figure)
+                    .filter(|(_, s)| s.figure == figure)
                     .map(|(p, s)| (*p, s.mu_bar))
             };
             let rms = rms_rel(mine())?;
@@ -219,14 +259,13 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
                     points: mine().count(),
                     refined_rms_rel_dev: rms,
                 },
-                fit_refined(samples.iter().filter(|s| s.figure != *figure)),
+                fit_refined(samples.iter().filter(|s| s.figure != figure)),
             ))
         })
         .collect();
     let mut files = vec![
-        write(ctx, "mastercurve.csv", &cases_csv(&rows, all.as_ref(), &cv))?,
-        write(
-            ctx,
+        ctx.write("mastercurve.csv", &cases_csv(&rows, all.as_ref(), &cv))?,
+        ctx.write(
             "mastercurve-fit.csv",
             &fit_csv(all.as_ref(), band, &held_out),
         )?,
@@ -245,7 +284,7 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
         })
         .collect();
     if !points.is_empty() {
-        files.push(write(ctx, "mastercurve.svg", &picture::svg(&points)?)?);
+        files.push(ctx.write("mastercurve.svg", &picture::svg(&points)?)?);
     }
     let eq13 = fit(&rows
         .iter()
@@ -271,27 +310,34 @@ pub fn build(ctx: &Context) -> Result<Built, String> {
         ),
         _ => format!("{} cases: too few to fit", rows.len()),
     };
-    Ok(Built {
-        name: "mastercurve",
-        title: "Beyond the paper: Eq. (13) and a refined friction formula, cross-validated".into(),
-        cases: rows.len(),
+    let cross_validation = held_out
+        .into_iter()
+        .map(|(c, _)| c)
+        .chain(rms_rel(pairs()).map(|rms| FigureCheck {
+            figure: "mastercurve",
+            points: samples.len(),
+            refined_rms_rel_dev: rms,
+        }))
+        .map(|c| Measure::RefinedCrossValidation {
+            target: c.figure,
+            rms_rel_dev: c.refined_rms_rel_dev,
+        });
+    Ok(TargetReport {
         solved: Some(rows.len()),
-        cached: None,
         level: ctx.level,
-        fit: eq13,
-        fit_all: None,
-        seconds: 0.0,
-        files,
         paper_claim: "all sliding friction results follow one curve in tau_c, Eq. (13)".into(),
         ours,
-        refined: held_out
+        headline: eq13.as_ref().map(|f| f.describe()),
+        measures: eq13
+            .map(Measure::Eq13)
             .into_iter()
-            .map(|(c, _)| c)
-            .chain(rms_rel(pairs()).map(|rms| FigureCheck {
-                figure: "mastercurve",
-                points: samples.len(),
-                refined_rms_rel_dev: rms,
-            }))
+            .chain(cross_validation)
             .collect(),
+        ..TargetReport::emitted(
+            "mastercurve",
+            "Beyond the paper: Eq. (13) and a refined friction formula, cross-validated",
+            rows.len(),
+            files,
+        )
     })
 }

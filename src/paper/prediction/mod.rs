@@ -15,7 +15,7 @@
 
 use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
 use crate::paper::mastercurve::refined::{Features, REFINED, REFINED_BAND};
-use crate::physics::case::{Case, CaseError, LubricantSpec, PhysicalCase, Problem, Spec};
+use crate::physics::case::{Case, CaseError, CaseForm, LubricantSpec, PhysicalCase, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::{
     characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
@@ -198,8 +198,8 @@ impl Prediction {
 
 fn physical(case: &Case) -> Result<&PhysicalCase, CaseError> {
     match &case.spec {
-        Spec::Physical(p) => Ok(p),
-        Spec::Dimensionless(_) => Err(CaseError::Field {
+        CaseForm::Physical(p) => Ok(p),
+        CaseForm::Dimensionless(_) => Err(CaseError::Field {
             field: "spec",
             message: "a prediction needs a contact given physically".into(),
         }),
@@ -209,7 +209,7 @@ fn physical(case: &Case) -> Result<&PhysicalCase, CaseError> {
 /// `case` with its lubricant's `alpha` replaced (and its `eta0` kept).
 fn with_alpha(case: &Case, alpha_per_pa: f64, eta0_pa_s: f64) -> Case {
     let mut case = case.clone();
-    if let Spec::Physical(p) = &mut case.spec {
+    if let CaseForm::Physical(p) = &mut case.spec {
         p.lubricant = LubricantSpec::Given {
             alpha_per_pa,
             eta0_pa_s,
@@ -227,7 +227,7 @@ mod tests {
     /// load.
     fn contact(lubricant: LubricantSpec, ph_pa: f64) -> Case {
         let mut case = worked_case();
-        if let Spec::Physical(p) = &mut case.spec {
+        if let CaseForm::Physical(p) = &mut case.spec {
             p.lubricant = lubricant;
             p.ph_pa = ph_pa;
         }
@@ -305,8 +305,8 @@ mod tests {
 
     fn case_eta0(case: &Case, lubs: &LubricantTable) -> f64 {
         match &case.spec {
-            Spec::Physical(p) => p.lubricant.resolve(lubs).unwrap().eta0_pa_s,
-            Spec::Dimensionless(_) => unreachable!(),
+            CaseForm::Physical(p) => p.lubricant.resolve(lubs).unwrap().eta0_pa_s,
+            CaseForm::Dimensionless(_) => unreachable!(),
         }
     }
 }

@@ -2,7 +2,15 @@
 //! digits in scientific notation, `-0` written as `0`, empty cells for missing values, `\n`
 //! line ends, cells quoted only where RFC 4180 needs it, files written atomically (temporary
 //! file, then rename).
+//!
+//! A CSV is written from rows that are structs (`#[derive(Serialize, Default)]`): the header
+//! is the field names, and every cell goes through one serializer (`cell.rs`), which writes
+//! each float as [`num`] does, `None` as an empty cell and text as it is. A row type says
+//! what its columns are; no code counts cells.
 
+mod cell;
+
+use cell::{cells, CellError};
 use serde::{Serialize, Serializer};
 use std::io::Write;
 use std::path::Path;
@@ -16,19 +24,15 @@ pub fn num(v: f64) -> String {
     }
 }
 
-/// An optional float: empty when absent.
-pub fn opt(v: Option<f64>) -> String {
-    v.map(num).unwrap_or_default()
-}
+/// A float written with `N` decimals, for wall times (`0.068`); the one cell type a row
+/// uses instead of the scientific form.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Decimals<const N: usize>(pub f64);
 
-/// `#[serde(serialize_with = "sci")]`: a float field as [`num`] writes it.
-pub fn sci<S: Serializer>(v: &f64, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(&num(*v))
-}
-
-/// `#[serde(serialize_with = "sci_opt")]`: an optional float field as [`opt`] writes it.
-pub fn sci_opt<S: Serializer>(v: &Option<f64>, s: S) -> Result<S::Ok, S::Error> {
-    s.serialize_str(&opt(*v))
+impl<const N: usize> Serialize for Decimals<N> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&format!("{:.*}", N, self.0))
+    }
 }
 
 /// Writes `text` to `path` atomically, creating the parent folder.
@@ -47,43 +51,62 @@ pub fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
     std::fs::rename(&tmp, path)
 }
 
-/// CSV text of `header` and `rows`, each row anything that serialises as a sequence of cells
-/// (a `Vec<String>`, an array of them).
-pub fn table<R: Serialize>(header: &[&str], rows: impl IntoIterator<Item = R>) -> String {
-    let mut w = writer(false);
-    let put = || -> Result<(), csv::Error> {
+/// CSV text of `rows`: the header from the fields of `R` (of its default value, so that a
+/// table without rows still has its header), one line per row.
+pub fn rows<R: Serialize + Default>(rows: impl IntoIterator<Item = R>) -> String {
+    rows_renamed(rows, &[])
+}
+
+/// [`rows`] with columns renamed in the header: `(field, column)` pairs (a figure names its
+/// x and y columns after what it plots).
+pub fn rows_renamed<R: Serialize + Default>(
+    rows: impl IntoIterator<Item = R>,
+    renamed: &[(&str, &str)],
+) -> String {
+    let put = || -> Result<csv::Writer<Vec<u8>>, CellError> {
+        let mut w = writer();
+        let (names, _) = cells(&R::default())?;
+        let header = names.iter().map(|n| {
+            renamed
+                .iter()
+                .find(|(field, _)| field == n)
+                .map_or(n.as_str(), |(_, column)| column)
+        });
         w.write_record(header)?;
         for r in rows {
-            w.serialize(r)?;
+            let (_, row) = cells(&r)?;
+            w.write_record(&row)?;
         }
-        Ok(())
+        Ok(w)
     };
-    finish(put().map(|_| w))
+    finish(put())
 }
 
-/// CSV text of serde records (structs): the header from the field names, one row each.
-pub fn records<R: Serialize>(rows: impl IntoIterator<Item = R>) -> String {
-    let mut w = writer(true);
-    let put = || -> Result<(), csv::Error> {
+/// CSV text of `header` and rows of text cells (a CSV read and written again).
+pub fn table(header: &[&str], rows: &[Vec<String>]) -> String {
+    let put = || -> Result<csv::Writer<Vec<u8>>, CellError> {
+        let mut w = writer();
+        w.write_record(header)?;
         for r in rows {
-            w.serialize(r)?;
+            w.write_record(r)?;
         }
-        Ok(())
+        Ok(w)
     };
-    finish(put().map(|_| w))
+    finish(put())
 }
 
-fn writer(has_headers: bool) -> csv::Writer<Vec<u8>> {
+fn writer() -> csv::Writer<Vec<u8>> {
     csv::WriterBuilder::new()
-        .has_headers(has_headers)
+        .has_headers(false)
         .terminator(csv::Terminator::Any(b'\n'))
         .from_writer(Vec::new())
 }
 
-/// The text a writer into memory holds. Writing strings and numbers into a `Vec` cannot fail
-/// (no I/O; our rows are flat), so a failure is a bug of the row type, reported in the text.
-fn finish(w: Result<csv::Writer<Vec<u8>>, csv::Error>) -> String {
-    match w.and_then(|w| w.into_inner().map_err(|e| e.into_error().into())) {
+/// The text a writer into memory holds. Writing into a `Vec` cannot fail (no I/O), and a row
+/// that is not a flat struct is a bug of its type, reported in the text.
+fn finish(w: Result<csv::Writer<Vec<u8>>, CellError>) -> String {
+    let bytes = w.and_then(|w| w.into_inner().map_err(|e| CellError(e.to_string())));
+    match bytes {
         Ok(bytes) => String::from_utf8_lossy(&bytes).into_owned(),
         Err(e) => format!("# CSV error: {e}\n"),
     }
@@ -156,20 +179,50 @@ mod tests {
     fn numbers_are_fixed_width_and_negative_zero_is_zero() {
         assert_eq!(num(-0.0), "0");
         assert_eq!(num(41.09), "4.109000e1");
-        assert_eq!(opt(None), "");
-        #[derive(Serialize)]
+    }
+
+    /// A row struct: the header from its fields (also without rows), every float through the
+    /// one cell serializer, `None` empty, integers and text as they are, renamed columns.
+    #[test]
+    fn rows_are_structs_with_one_number_format() {
+        #[derive(Serialize, Default)]
         struct Row {
             name: &'static str,
-            #[serde(serialize_with = "sci")]
+            level: u32,
             x: f64,
-            #[serde(serialize_with = "sci_opt")]
             y: Option<f64>,
+            seconds: Decimals<3>,
         }
-        let text = records([Row {
-            name: "a",
-            x: -0.0,
-            y: None,
-        }]);
-        assert_eq!(text, "name,x,y\na,0,\n");
+        let text = rows([
+            Row {
+                name: "a, b",
+                level: 7,
+                x: -0.0,
+                y: None,
+                seconds: Decimals(0.0684),
+            },
+            Row {
+                x: 41.09,
+                y: Some(2.5e-7),
+                ..Row::default()
+            },
+        ]);
+        assert_eq!(
+            text,
+            "name,level,x,y,seconds\n\"a, b\",7,0,,0.068\n,0,4.109000e1,2.500000e-7,0.000\n"
+        );
+        assert_eq!(rows(Vec::<Row>::new()), "name,level,x,y,seconds\n");
+        let renamed = rows_renamed(Vec::<Row>::new(), &[("x", "tau_c_x")]);
+        assert_eq!(renamed, "name,level,tau_c_x,y,seconds\n");
+    }
+
+    #[test]
+    fn a_row_that_is_not_a_flat_struct_is_reported() {
+        #[derive(Serialize, Default)]
+        struct Nested {
+            v: Vec<f64>,
+        }
+        let text = rows([Nested { v: vec![1.0] }]);
+        assert!(text.starts_with("# CSV error"), "{text}");
     }
 }
