@@ -10,7 +10,7 @@
 //! minute of single solves).
 
 use criterion::{BenchmarkId, Criterion};
-use repro::paper::accuracy::{study_cases, Contact};
+use repro::paper::accuracy::cases::{accuracy_cases, AccuracyProblem};
 use repro::paper::build;
 use repro::paper::figures::FIG7;
 use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
@@ -28,7 +28,7 @@ fn full() -> bool {
 }
 
 fn levels(c: &mut Criterion) {
-    let cases = study_cases(false).expect("the shipped cases resolve");
+    let cases = accuracy_cases(false).expect("the shipped cases resolve");
     let levels: &[u32] = if full() { &[5, 6, 7] } else { &[5] };
     let mut group = c.benchmark_group("solve");
     group.sample_size(10);
@@ -50,8 +50,8 @@ fn levels(c: &mut Criterion) {
 
 /// The Table 4 case with one effect swapped for its cheaper alternative.
 fn effects(c: &mut Criterion) {
-    let cases = study_cases(false).expect("the shipped cases resolve");
-    let Some(Contact::Point { problem, .. }) = cases
+    let cases = accuracy_cases(false).expect("the shipped cases resolve");
+    let Some(AccuracyProblem::Point { problem, .. }) = cases
         .iter()
         .find(|c| c.name == "table4")
         .map(|c| &c.contact)

@@ -11,7 +11,9 @@
 //! print floats in shortest round-trip form, so any difference is a different path.
 
 use crate::support::{repro, repro_in};
-use repro::paper::accuracy::{pipeline_params, study_cases, Contact, Measured};
+use repro::paper::accuracy::cases::{
+    accuracy_cases, pipeline_params, AccuracyProblem, LevelOutputs,
+};
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
 use repro::pipeline::cache::{Cache, Lookup};
@@ -141,7 +143,7 @@ impl Outputs {
     }
 
     /// The accuracy study measures the central film and sliding `mu-bar` only.
-    fn of_measured(m: &Measured) -> Self {
+    fn of_measured(m: &LevelOutputs) -> Self {
         Outputs {
             h_central: m.h_central,
             hc_moes: None,
@@ -237,7 +239,7 @@ fn study(name: &str, text: &str) -> Outputs {
 }
 
 /// The accuracy study's pipeline ([`pipeline_params`]) on `contact` at level 5.
-fn accuracy(contact: &Contact) -> Outputs {
+fn accuracy(contact: &AccuracyProblem) -> Outputs {
     Outputs::of_measured(
         &contact
             .solve(LEVEL)
@@ -254,7 +256,7 @@ fn every_path_solves_the_5p4e_contact_alike() {
     let problem =
         Problem::from_case(&sweep.cases[0], &LubricantTable::table1()).expect("a valid case");
     assert!(problem.groups.m < 10.0, "M = {}", problem.groups.m);
-    let by_accuracy = accuracy(&Contact::Point {
+    let by_accuracy = accuracy(&AccuracyProblem::Point {
         problem: Box::new(problem),
         params: pipeline_params,
     });
@@ -272,7 +274,7 @@ fn every_path_solves_the_light_barus_case_alike() {
     // `repro predict` takes the physical form only: this case goes through the other paths.
     let by_solve = solve(&FLAGS_LIGHT);
     let by_study = study("light", STUDY_LIGHT);
-    let cases = study_cases(false).expect("the accuracy study's cases");
+    let cases = accuracy_cases(false).expect("the accuracy study's cases");
     let light = cases
         .iter()
         .find(|c| c.name == "light-barus")
@@ -312,7 +314,7 @@ fn every_path_starts_a_family_member_from_its_base_alike() {
     let sweep = Sweep::parse("one-rule.toml", &member).expect("a valid study");
     let problem =
         Problem::from_case(&sweep.cases[0], &LubricantTable::table1()).expect("a valid case");
-    let by_accuracy = accuracy(&Contact::Point {
+    let by_accuracy = accuracy(&AccuracyProblem::Point {
         problem: Box::new(problem),
         params: pipeline_params,
     });

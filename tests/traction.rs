@@ -3,11 +3,11 @@
 //! shear rate from the computed film), parsed and transformed back, must return the solver's
 //! own tau_c (Eq. 12) and mu-bar (Eq. 8).
 
-use repro::paper::fig8::measured::{parse, transform};
+use repro::paper::cases::shipped_sweep;
+use repro::paper::fig8::reader::{parse, transform};
 use repro::physics::case::{CaseForm, LubricantSpec, Problem};
 use repro::physics::film::hc_eq10;
 use repro::physics::lubricant::LubricantTable;
-use repro::pipeline::sweep::shipped_sweep;
 use repro::solver::point::{solve, Params};
 
 /// Level 6 (128 x 128): the round trip needs a converged solve, not an accurate one, and three

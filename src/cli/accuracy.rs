@@ -14,9 +14,9 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
     if args.repeats == 0 {
         bail!("--repeats: must be at least 1");
     }
-    let cases = accuracy::study_cases(!args.no_line).map_err(anyhow::Error::msg)?;
+    let cases = accuracy::cases::accuracy_cases(!args.no_line).map_err(anyhow::Error::msg)?;
     let quiet = args.quiet;
-    let mut progress = |c: &accuracy::StudyCase, r: &accuracy::LevelRun| {
+    let mut progress = |c: &accuracy::AccuracyCase, r: &accuracy::LevelRun| {
         if quiet {
             return;
         }
@@ -34,8 +34,11 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
     let studies = accuracy::run(&cases, &args.levels.0, args.repeats, &mut progress);
     let recs = accuracy::recommend(&studies, MU_TOLERANCE);
     let files = [
-        ("accuracy.csv", accuracy::to_csv(&studies)),
-        ("accuracy_levels.csv", accuracy::recommendations_csv(&recs)),
+        ("accuracy.csv", accuracy::files::to_csv(&studies)),
+        (
+            "accuracy_levels.csv",
+            accuracy::files::recommendations_csv(&recs),
+        ),
         (
             "accuracy.svg",
             accuracy::picture::svg(&studies).map_err(anyhow::Error::msg)?,
@@ -46,7 +49,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
         write_atomic(&path, text)
             .with_context(|| format!("--out: cannot write {}", path.display()))?;
     }
-    print!("{}", accuracy::to_text(&studies, &recs));
+    print!("{}", accuracy::files::to_text(&studies, &recs));
     println!(
         "wrote {}",
         files

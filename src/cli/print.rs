@@ -1,7 +1,7 @@
 //! What the commands print, shared by them: a solve's JSON object, the rolling friction as
 //! text, a failed solve, the per-cycle progress of one solve and a target's summary line.
 
-use repro::paper::mastercurve::fit::{mastercurve, PAPER_C};
+use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use repro::paper::TargetReport;
 use repro::physics::case::Physics;
 use repro::solver::output::{Film, Friction, Info, Progress, SolveError, Step};
@@ -44,7 +44,7 @@ impl SolveReport<'_> {
             "mu_bar_rolling": self.friction.rolling,
             "mu_bar_total": self.friction.total(),
             "tau_c": self.tau_c,
-            "mu_bar_eq13": mastercurve(self.tau_c, PAPER_C),
+            "mu_bar_eq13": eq13_mu_bar(self.tau_c, PAPER_C),
             "residual": self.info.residual(),
         }));
         Value::Object(out)

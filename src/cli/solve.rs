@@ -6,6 +6,7 @@ use super::config::flag_error;
 use super::print::{print_failure, rolling_text, solve_progress, SolveReport};
 use super::thermal;
 use anyhow::{Context as _, Result};
+use repro::paper::prediction::heat::HeatCorrection;
 use repro::physics::case::{Case, Problem};
 use repro::physics::line_contact::{LineFilmFormula, LineProblem};
 use repro::physics::lubricant::LubricantTable;
@@ -69,7 +70,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
         });
         write_fields(path, &rows(nodes))?;
     }
-    let heat = thermal::of_solution(&case, &problem, &s, &inputs);
+    let heat = HeatCorrection::of_solution(&case, &problem, &s, &inputs);
     let (line, warning) = thermal::describe(&heat);
     if args.json {
         let mut v = point_report(&problem, &s).json();

@@ -11,6 +11,7 @@
 
 pub mod accuracy;
 pub mod artefact;
+pub mod cases;
 pub mod fig8;
 pub mod figures;
 pub mod lss;
@@ -42,7 +43,7 @@ pub static REGISTRY: &[&dyn Artefact] = &[
     &figures::FIG7,
     &fig8::Fig8,
     &mastercurve::Mastercurve,
-    &thermal::Thermal,
+    &thermal::ShearHeating,
     &lss::Lss,
 ];
 

@@ -16,7 +16,7 @@ pub const SEVERITY: &str = "S\u{304}^{1/4} M L^{3}";
 /// The label reads "Eq. (13): ..." for c = 5 and "fit: ..." otherwise. Bounds that are not
 /// finite with 0 < `x_min` < `x_max`, or a `c` that is not finite and positive, give a curve
 /// without points: nothing is drawn for it.
-pub fn mastercurve(x_min: f64, x_max: f64, c: f64, n: usize) -> Curve {
+pub fn eq13_curve(x_min: f64, x_max: f64, c: f64, n: usize) -> Curve {
     let is_eq13 = (c - 5.0).abs() < 1e-12;
     let label = if is_eq13 {
         format!("Eq. (13): {MU_BAR} = asinh({TAU_C}/5)")
@@ -61,7 +61,7 @@ mod tests {
 
     #[test]
     fn mastercurve_samples_eq13_log_uniformly() {
-        let c = mastercurve(0.01, 1e4, 5.0, 7);
+        let c = eq13_curve(0.01, 1e4, 5.0, 7);
         assert!(c.dashed);
         assert!(c.label.starts_with("Eq. (13)"));
         assert_eq!(c.points.len(), 7);
@@ -73,10 +73,10 @@ mod tests {
             assert!((x / expect - 1.0).abs() < 1e-12, "x[{i}] = {x}");
             assert!((y - (x / 5.0).asinh()).abs() < 1e-15);
         }
-        let fit = mastercurve(0.1, 10.0, 4.9312, 10);
+        let fit = eq13_curve(0.1, 10.0, 4.9312, 10);
         assert!(fit.label.contains("/4.93)"), "{}", fit.label);
-        assert!(mastercurve(0.0, 10.0, 5.0, 10).points.is_empty());
-        assert!(mastercurve(1.0, 10.0, -5.0, 10).points.is_empty());
-        assert_eq!(mastercurve(1.0, 10.0, 5.0, 0).points.len(), 2);
+        assert!(eq13_curve(0.0, 10.0, 5.0, 10).points.is_empty());
+        assert!(eq13_curve(1.0, 10.0, -5.0, 10).points.is_empty());
+        assert_eq!(eq13_curve(1.0, 10.0, 5.0, 0).points.len(), 2);
     }
 }

@@ -2,7 +2,7 @@
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
 use crate::paper::artefact::{Artefact, TargetReport};
-use crate::paper::mastercurve::fit::{implied_c, mastercurve, PAPER_C};
+use crate::paper::mastercurve::fit::{eq13_mu_bar, implied_c, PAPER_C};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::cache::{key_of, Stamp};
@@ -58,7 +58,7 @@ pub fn paper_at(level: u32) -> Option<(f64, f64)> {
 
 /// One level's result.
 #[derive(Debug, Clone)]
-pub struct Row {
+pub struct Table4Level {
     /// Grid level.
     pub level: u32,
     /// The solve, or why it failed.
@@ -76,7 +76,7 @@ pub struct Row {
     pub cached: bool,
 }
 
-impl Row {
+impl Table4Level {
     /// The paper's `(Hc, mu-bar)` at this level, if it printed one.
     pub fn paper(&self) -> Option<(f64, f64)> {
         paper_at(self.level)
@@ -100,13 +100,13 @@ pub fn compute(
     spec: &Table4Case,
     levels: &[u32],
     mut observer: impl FnMut(&Progress),
-) -> Result<Vec<Row>, String> {
+) -> Result<Vec<Table4Level>, String> {
     let problem = spec.problem()?;
     let mut rows = Vec::new();
     for &level in levels {
         let t = std::time::Instant::now();
         let solved = solve(&problem, &params(&problem, level), Some(&mut observer));
-        rows.push(Row {
+        rows.push(Table4Level {
             level,
             outcome: CaseOutcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
             seconds: Some(t.elapsed().as_secs_f64()),
@@ -158,7 +158,7 @@ pub fn compute_cached(
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Vec<Row>, String> {
+) -> Result<Vec<Table4Level>, String> {
     let tau_c = spec.problem()?.tau_c();
     let jobs = jobs(spec, levels)?;
     let finished = run_jobs("table4", &jobs, policy, progress, warn)?;
@@ -166,7 +166,7 @@ pub fn compute_cached(
         .iter()
         .zip(jobs)
         .zip(finished)
-        .map(|((&level, job), f)| Row {
+        .map(|((&level, job), f)| Table4Level {
             level,
             seconds: f.stamp.as_ref().map(|s| s.seconds),
             outcome: f.outcome,
@@ -276,7 +276,7 @@ struct Table4Row {
 }
 
 /// CSV of the rows, with the paper's values beside ours.
-pub fn to_csv(rows: &[Row]) -> String {
+pub fn to_csv(rows: &[Table4Level]) -> String {
     crate::pipeline::csv::rows(rows.iter().map(|r| {
         let n = 1u32 << (r.level + 1);
         let paper = r.paper();
@@ -286,7 +286,7 @@ pub fn to_csv(rows: &[Row]) -> String {
             paper_hc: paper.map(|p| p.0),
             paper_mu_bar: paper.map(|p| p.1),
             tau_c: r.tau_c,
-            mu_bar_eq13: mastercurve(r.tau_c, PAPER_C),
+            mu_bar_eq13: eq13_mu_bar(r.tau_c, PAPER_C),
             paper_implied_c: paper.map(|p| implied_c(r.tau_c, p.1)),
             seconds: r.seconds.map(Decimals),
             ..Table4Row::default()
@@ -318,7 +318,7 @@ pub fn to_csv(rows: &[Row]) -> String {
 }
 
 /// A readable table with the paper's values side by side.
-pub fn to_text(rows: &[Row]) -> String {
+pub fn to_text(rows: &[Table4Level]) -> String {
     let mut out = String::from(
         "Table 4: Appendix case (mineral oil A, 3 GPa, 40 C, 12 m/s, S = 0.5 %, tau0 = 4 MPa)\n",
     );
@@ -366,7 +366,7 @@ pub fn to_text(rows: &[Row]) -> String {
 
 /// Where the case sits on Eq. (13): its `tau_c`, the curve's `mu-bar`, and the `c` that
 /// would put the finest level's `mu-bar` (ours and the paper's) on the curve.
-pub fn mastercurve_note(rows: &[Row]) -> String {
+pub fn mastercurve_note(rows: &[Table4Level]) -> String {
     let Some((r, ours)) = rows
         .iter()
         .rev()
@@ -377,7 +377,7 @@ pub fn mastercurve_note(rows: &[Row]) -> String {
     let mut s = format!(
         "tau_c (Eq. 12) = {:.3e}: Eq. (13) gives mu-bar = {:.2}; level {} puts it on the curve with c = {:.2} (ours)",
         r.tau_c,
-        mastercurve(r.tau_c, PAPER_C),
+        eq13_mu_bar(r.tau_c, PAPER_C),
         r.level,
         implied_c(r.tau_c, ours)
     );
@@ -417,7 +417,7 @@ mod tests {
     fn the_papers_own_table_4_value_implies_c_near_8() {
         let tau_c = Table4Case::shipped().unwrap().problem().unwrap().tau_c();
         assert!((tau_c / 3.0749e18 - 1.0).abs() < 1e-4, "tau_c {tau_c:e}");
-        assert!((mastercurve(tau_c, PAPER_C) - 41.65).abs() < 0.01);
+        assert!((eq13_mu_bar(tau_c, PAPER_C) - 41.65).abs() < 0.01);
         let (_, paper_level7) = paper_at(7).unwrap();
         let c = implied_c(tau_c, paper_level7);
         // 41.13 is printed to 4 digits: +-0.005 in mu-bar is +-0.5 % in c.

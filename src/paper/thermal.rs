@@ -12,7 +12,7 @@ use crate::paper::artefact::{Artefact, TargetReport};
 use crate::paper::figures::rows::Operating;
 use crate::paper::figures::{SweepFigure, FIG4, FIG5, FIG6};
 use crate::paper::mastercurve::fit::PAPER_C;
-use crate::paper::picture::{mastercurve as eq13_curve, MU_BAR, TAU_C};
+use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::paper::table4::Table4Case;
 use crate::physics::case::CaseForm;
 use crate::physics::thermal::ISOTHERMAL_CORRECTION_MAX;
@@ -30,9 +30,9 @@ const FIGURES: [(&SweepFigure, &str); 3] = [
 ];
 
 /// The `thermal` target.
-pub struct Thermal;
+pub struct ShearHeating;
 
-impl Artefact for Thermal {
+impl Artefact for ShearHeating {
     fn name(&self) -> &'static str {
         "thermal"
     }
@@ -56,13 +56,13 @@ impl Artefact for Thermal {
 }
 
 /// One corrected case.
-struct Row<'a> {
+struct CorrectedCase<'a> {
     figure: &'static str,
     case: usize,
     run: &'a PointRun,
 }
 
-impl Row<'_> {
+impl CorrectedCase<'_> {
     /// The correction with steel (46) and through-hardened steel (21), relative.
     fn corrections(&self) -> Option<(f64, f64)> {
         let r = self.run.solved()?;
@@ -123,7 +123,7 @@ struct ThermalRow<'a> {
     isothermal_holds: &'a str,
 }
 
-fn csv(rows: &[Row]) -> String {
+fn csv(rows: &[CorrectedCase]) -> String {
     crate::pipeline::csv::rows(rows.iter().map(|row| {
         let r = row.run;
         let (operating, tau0_mpa) = Operating::of(&r.case);
@@ -172,7 +172,7 @@ fn csv(rows: &[Row]) -> String {
     }))
 }
 
-fn svg(rows: &[Row]) -> Result<Option<String>, String> {
+fn svg(rows: &[CorrectedCase]) -> Result<Option<String>, String> {
     let mut series = Vec::new();
     for (k, (fig, lubricant)) in FIGURES.iter().enumerate() {
         let mine = || rows.iter().filter(|r| r.figure == fig.name);
@@ -231,8 +231,13 @@ fn svg(rows: &[Row]) -> Result<Option<String>, String> {
 
 /// One lubricant's summary: where the isothermal assumption holds, the worst case and its
 /// sensitivity to the solid's conductivity.
-fn summary(rows: &[Row], figure: &str, lubricant: &str, table4: Option<&Row>) -> String {
-    let mine: Vec<(&Row, (f64, f64))> = rows
+fn summary(
+    rows: &[CorrectedCase],
+    figure: &str,
+    lubricant: &str,
+    table4: Option<&CorrectedCase>,
+) -> String {
+    let mine: Vec<(&CorrectedCase, (f64, f64))> = rows
         .iter()
         .filter(|r| r.figure == figure)
         .filter_map(|r| r.corrections().map(|c| (r, c)))
@@ -286,10 +291,10 @@ fn build(ctx: &Context) -> Result<TargetReport, String> {
         level = Some(l);
         runs.push((fig.name, r));
     }
-    let rows: Vec<Row> = runs
+    let rows: Vec<CorrectedCase> = runs
         .iter()
         .flat_map(|(name, r)| {
-            r.iter().enumerate().map(|(i, run)| Row {
+            r.iter().enumerate().map(|(i, run)| CorrectedCase {
                 figure: name,
                 case: i + 1,
                 run,

@@ -75,7 +75,7 @@ fn host_name() -> String {
 /// An entry as stored. `sha256` covers the payload followed by the stamp's text (the payload
 /// alone in entries written before stamps, which still read).
 #[derive(Serialize, Deserialize)]
-struct Entry {
+struct EntryFile {
     key: String,
     sha256: String,
     payload: String,
@@ -83,7 +83,7 @@ struct Entry {
     stamp: Option<String>,
 }
 
-impl Entry {
+impl EntryFile {
     fn checksum(payload: &str, stamp: Option<&str>) -> String {
         match stamp {
             Some(s) => sha256_hex(format!("{payload}\n{s}").as_bytes()),
@@ -180,7 +180,7 @@ impl Cache {
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
             Err(e) => return Err(format!("{}: {e}", path.display())),
         };
-        let entry: Entry = serde_json::from_str(&text)
+        let entry: EntryFile = serde_json::from_str(&text)
             .map_err(|e| format!("{}: not a cache entry: {e}", path.display()))?;
         if entry.key != key {
             return Err(format!(
@@ -189,7 +189,7 @@ impl Cache {
                 entry.key
             ));
         }
-        if Entry::checksum(&entry.payload, entry.stamp.as_deref()) != entry.sha256 {
+        if EntryFile::checksum(&entry.payload, entry.stamp.as_deref()) != entry.sha256 {
             return Err(format!("{}: field sha256: hash mismatch", path.display()));
         }
         let stamp = match &entry.stamp {
@@ -225,9 +225,9 @@ impl Cache {
     pub fn put<T: Serialize>(&self, key: &str, value: &T, stamp: &Stamp) -> std::io::Result<()> {
         let payload = serde_json::to_string(value).map_err(std::io::Error::other)?;
         let stamp = serde_json::to_string(stamp).map_err(std::io::Error::other)?;
-        let entry = Entry {
+        let entry = EntryFile {
             key: key.to_string(),
-            sha256: Entry::checksum(&payload, Some(&stamp)),
+            sha256: EntryFile::checksum(&payload, Some(&stamp)),
             payload,
             stamp: Some(stamp),
         };

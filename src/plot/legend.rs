@@ -10,14 +10,14 @@ use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-pub(super) enum Sample {
+pub(super) enum LegendSample {
     Marker(Marker, RGBColor),
     Line(bool, RGBColor),
 }
 
 pub(super) struct LegendRow {
     pub(super) label: String,
-    pub(super) sample: Sample,
+    pub(super) sample: LegendSample,
 }
 
 pub(super) fn draw_legend(
@@ -41,14 +41,14 @@ pub(super) fn draw_legend(
         let y = rect.y0 + LEGEND_PAD / 2 + i as i32 * row_h + row_h / 2;
         let x = rect.x0 + LEGEND_PAD;
         match row.sample {
-            Sample::Marker(marker, color) => root
+            LegendSample::Marker(marker, color) => root
                 .draw(&Glyph {
                     at: (x + LEGEND_SAMPLE / 2, y),
                     marker,
                     color,
                 })
                 .map_err(drawing)?,
-            Sample::Line(dashed, color) => {
+            LegendSample::Line(dashed, color) => {
                 let style = ShapeStyle::from(&color).stroke_width(2);
                 let line = vec![(x, y), (x + LEGEND_SAMPLE, y)];
                 if dashed {

@@ -1,14 +1,14 @@
 //! `accuracy.svg` of `repro accuracy`: what accuracy costs, the error of each level against
 //! its wall time.
 
-use crate::paper::accuracy::CaseStudy;
+use crate::paper::accuracy::AccuracyResult;
 use crate::paper::picture::MU_BAR;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
 
 /// `figures/accuracy.svg`: the `mu-bar` error of each level against its wall time, log-log,
 /// one line per case through its levels, each marker labelled with its level. A level whose error is zero (the finest, when it is its own reference)
 /// cannot be drawn on a log axis and is counted in the figure's note by the plot module.
-pub fn svg(studies: &[CaseStudy]) -> Result<String, String> {
+pub fn svg(studies: &[AccuracyResult]) -> Result<String, String> {
     let series = studies
         .iter()
         .enumerate()

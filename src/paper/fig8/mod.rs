@@ -3,12 +3,12 @@
 //! nothing is computed or invented. When the folder holds no dataset the target still builds,
 //! and its CSV, its SVG and its report entry say so and how to add one.
 
-pub mod measured;
 pub mod picture;
+pub mod reader;
 
 use crate::paper::artefact::{Artefact, Measure, TargetReport};
-use crate::paper::fig8::measured::{read_folder, transform, ReducedRow};
-use crate::paper::mastercurve::fit::{mastercurve, FIT_TAU_C_MIN, PAPER_C};
+use crate::paper::fig8::reader::{read_folder, transform, ReducedRow};
+use crate::paper::mastercurve::fit::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;
 use crate::pipeline::context::Context;
@@ -26,7 +26,7 @@ pub const NO_DATA: &str = "No measured dataset is included: cases/fig8/ holds no
 /// A row of `fig8.csv`: one measured point, its operating point, what Sec. IV makes of it
 /// and its source.
 #[derive(Debug, Default, Serialize)]
-struct MeasuredRow<'a> {
+struct Fig8Row<'a> {
     dataset: &'a str,
     row: usize,
     series: &'a str,
@@ -62,8 +62,8 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
     let table = crate::pipeline::csv::rows(rows.iter().map(|r| {
         let c = &r.reduced.characteristic;
         let p = &r.row.point;
-        let eq13 = mastercurve(c.tau_c, PAPER_C);
-        MeasuredRow {
+        let eq13 = eq13_mu_bar(c.tau_c, PAPER_C);
+        Fig8Row {
             dataset: &r.dataset,
             row: r.row.row,
             series: &r.row.series,

@@ -2,9 +2,9 @@
 //! dataset series; with no dataset, the curve alone over the range of Figs. 4-8 and a note
 //! saying how to add one.
 
-use crate::paper::fig8::measured::ReducedRow;
+use crate::paper::fig8::reader::ReducedRow;
 use crate::paper::mastercurve::fit::PAPER_C;
-use crate::paper::picture::{mastercurve, MU_BAR, TAU_C};
+use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series};
 
 /// `fig8.svg`: the measured points and Eq. (13) dashed, with the fitted `c` solid when given.
@@ -38,12 +38,12 @@ pub fn svg(rows: &[ReducedRow], fitted: Option<f64>) -> Result<String, String> {
     };
     let mut curves = vec![Curve {
         label: format!("Eq. (13): {} = asinh({}/5)", MU_BAR, TAU_C),
-        ..mastercurve(x_min, x_max, PAPER_C, 200)
+        ..eq13_curve(x_min, x_max, PAPER_C, 200)
     }];
     if let Some(c) = fitted {
         curves.push(Curve {
             dashed: false,
-            ..mastercurve(x_min, x_max, c, 200)
+            ..eq13_curve(x_min, x_max, c, 200)
         });
     }
     let fig = Figure {

@@ -1,7 +1,8 @@
 //! The line contacts of Fig. 7: the five Table 3 load cases of `cases/fig7.toml` (mineral oil
 //! A, Roelands, Dowson-Higginson, Eyring) without their `Ry`, solved by the 1-D solver.
 
-use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
+use crate::paper::cases::shipped_sweep;
+use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::line_flat;
 use crate::physics::case::{CaseForm, Physics};
 use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
@@ -12,7 +13,6 @@ use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
 use crate::pipeline::job::{Job, Solve};
 use crate::pipeline::keys::line_key;
 use crate::pipeline::outcome::CaseOutcome;
-use crate::pipeline::sweep::shipped_sweep;
 use crate::solver::line::Params;
 use serde::Serialize;
 
@@ -148,7 +148,7 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
     rows(runs.iter().enumerate().map(|(i, r)| {
         let g = &r.problem.groups;
         let tau_c = r.problem.tau_c();
-        let eq13 = mastercurve(tau_c, PAPER_C);
+        let eq13 = eq13_mu_bar(tau_c, PAPER_C);
         let row = LineRow {
             case: i + 1,
             ph_gpa: r.case.ph_pa / 1e9,

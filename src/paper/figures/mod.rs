@@ -7,6 +7,7 @@ pub mod picture;
 pub mod rows;
 
 use crate::paper::artefact::{Artefact, Measure, TargetReport, LINE_LEVEL, WORKING_LEVEL};
+use crate::paper::cases::shipped_sweep;
 use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
 use crate::physics::case::Case;
 use crate::pipeline::context::Context;
@@ -15,7 +16,7 @@ use crate::pipeline::job::{point_jobs, Job};
 use crate::pipeline::keys::LINE_SOLVER_REVISION;
 use crate::pipeline::outcome::CaseOutcome;
 use crate::pipeline::provenance::{Provenance, SUFFIX};
-use crate::pipeline::sweep::{shipped_sweep, Sweep};
+use crate::pipeline::sweep::Sweep;
 use crate::plot::{Marker, Series};
 use crate::solver::point::SOLVER_REVISION;
 use line::LineRun;

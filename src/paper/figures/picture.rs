@@ -3,7 +3,7 @@
 //! by the case's defining parameter so that the collapse (or not) is visible.
 
 use crate::paper::mastercurve::fit::PAPER_C;
-use crate::paper::picture::mastercurve;
+use crate::paper::picture::eq13_curve;
 use crate::physics::case::CaseForm;
 use crate::pipeline::executor::PointRun;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
@@ -93,7 +93,7 @@ pub fn svg(
     let curves = if severity || xs.is_empty() {
         Vec::new()
     } else {
-        vec![mastercurve(x_min, x_max, PAPER_C, 200)]
+        vec![eq13_curve(x_min, x_max, PAPER_C, 200)]
     };
     let y_label = if total {
         "total reduced friction μ̄"

@@ -3,7 +3,7 @@
 //! post-process.
 
 use super::Plot;
-use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
+use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::point_flat;
 use crate::physics::case::{Case, CaseForm, LubricantSpec};
 use crate::pipeline::csv::rows_renamed;
@@ -13,7 +13,7 @@ use serde::Serialize;
 
 /// A row of a figure's CSV (`x` and `y` are named after what the figure plots).
 #[derive(Debug, Default, Serialize)]
-struct CaseRow {
+struct FigureRow {
     case: usize,
     #[serde(flatten)]
     operating: Operating,
@@ -119,14 +119,14 @@ impl ThermalCells {
     }
 }
 
-impl CaseRow {
+impl FigureRow {
     /// The row of run `r`, the `i`-th case (from 0) of a figure that plots `plot`.
     fn of(i: usize, r: &PointRun, plot: Plot) -> Self {
         let g = &r.problem.groups;
         let tau_c = r.problem.tau_c();
-        let eq13 = mastercurve(tau_c, PAPER_C);
+        let eq13 = eq13_mu_bar(tau_c, PAPER_C);
         let (operating, tau0_mpa) = Operating::of(&r.case);
-        let row = CaseRow {
+        let row = FigureRow {
             case: i + 1,
             operating,
             slip: g.slip,
@@ -143,13 +143,13 @@ impl CaseRow {
             mu_bar_eq13: eq13,
             thermal: ThermalCells::of(r.solved()),
             status: r.outcome.status(),
-            ..CaseRow::default()
+            ..FigureRow::default()
         };
         match &r.outcome {
             CaseOutcome::Solved(s) => {
                 let flat = point_flat(&r.problem, s.h_central);
                 let point = plot.xy(r);
-                CaseRow {
+                FigureRow {
                     hc: Some(s.h_central),
                     hc_moes: Some(s.hc_moes),
                     hmin: Some(s.h_min),
@@ -168,7 +168,7 @@ impl CaseRow {
                     ..row
                 }
             }
-            CaseOutcome::Failed(f) => CaseRow {
+            CaseOutcome::Failed(f) => FigureRow {
                 cycles: Some(f.residual_history.len()),
                 residual: f.residual_history.last().copied(),
                 ..row
@@ -187,7 +187,7 @@ pub fn csv(runs: &[PointRun], plot: Plot) -> String {
     rows_renamed(
         runs.iter()
             .enumerate()
-            .map(|(i, r)| CaseRow::of(i, r, plot)),
+            .map(|(i, r)| FigureRow::of(i, r, plot)),
         &[("x", x), ("y", y)],
     )
 }

@@ -19,7 +19,7 @@ pub fn saturated(mu_e: f64, mu_s: f64, n: f64) -> f64 {
 
 /// One case: its Eyring friction, saturated value and the limited solver's friction.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Point {
+pub struct FormPoint {
     /// Eyring friction (Eq. 13 at the case's `tau_c`, or the case's own Eyring solve).
     pub mu_e: f64,
     /// Saturated friction `mu_S`.
@@ -48,7 +48,7 @@ pub struct FormFit {
 const N_RANGE: (f64, f64) = (0.5, 20.0);
 
 /// The scatter of `points` about the form with exponent `n`.
-fn scatter(points: &[Point], n: f64) -> FormFit {
+fn scatter(points: &[FormPoint], n: f64) -> FormFit {
     let (mut sq, mut max, mut rel) = (0.0_f64, 0.0_f64, 0.0_f64);
     for p in points {
         let d = p.mu_bar - saturated(p.mu_e, p.mu_s, n);
@@ -70,7 +70,7 @@ fn scatter(points: &[Point], n: f64) -> FormFit {
 /// RMS is smooth and, over the cases of the target, unimodal in `n`; a coarse scan first
 /// brackets the minimum so that a second local minimum could not capture the search).
 /// `None` for fewer than two points.
-pub fn fit(points: &[Point]) -> Option<FormFit> {
+pub fn fit(points: &[FormPoint]) -> Option<FormFit> {
     if points.len() < 2 {
         return None;
     }
@@ -112,7 +112,7 @@ mod tests {
     fn fit_recovers_the_exponent_of_exact_data() {
         // Points made with n = 3.7 exactly: the search returns it to its tolerance (golden
         // section 60 steps on a bracket of one scan step: far below 1e-6) with zero scatter.
-        let points: Vec<Point> = [
+        let points: Vec<FormPoint> = [
             (2.0, 5.0),
             (5.0, 5.0),
             (9.0, 5.0),
@@ -120,7 +120,7 @@ mod tests {
             (8.0, 40.0),
         ]
         .iter()
-        .map(|&(mu_e, mu_s)| Point {
+        .map(|&(mu_e, mu_s)| FormPoint {
             mu_e,
             mu_s,
             mu_bar: saturated(mu_e, mu_s, 3.7),

@@ -12,17 +12,18 @@
 pub mod form;
 
 use crate::paper::artefact::{Artefact, TargetReport};
+use crate::paper::cases::shipped_sweep;
 use crate::paper::figures::{run_sweep, study_jobs, FIG4};
-use crate::paper::lss::form::{fit, saturated, FormFit, Point};
-use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
-use crate::paper::picture::{mastercurve as eq13_curve, MU_BAR, TAU_C};
+use crate::paper::lss::form::{fit, saturated, FormFit, FormPoint};
+use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::physics::case::{Case, CaseForm};
 use crate::physics::rheology::{LimitingShearStress, Rheology};
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::rows;
 use crate::pipeline::executor::PointRun;
 use crate::pipeline::job::Job;
-use crate::pipeline::sweep::{shipped_sweep, Sweep};
+use crate::pipeline::sweep::Sweep;
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series};
 use serde::Serialize;
 
@@ -137,7 +138,7 @@ fn jobs(ctx: &Context) -> Result<Vec<Job>, String> {
 }
 
 /// One limited case with its Eyring twin.
-struct Row {
+struct LimitedCase {
     lambda_bar: f64,
     case: usize,
     tau_c: f64,
@@ -155,7 +156,7 @@ fn pair_with_eyring(
     eyring: &[PointRun],
     numbers: &[usize],
     limited: &[(f64, Vec<PointRun>, Vec<usize>)],
-) -> Vec<Row> {
+) -> Vec<LimitedCase> {
     let mut rows = Vec::new();
     for (lb, runs, picked) in limited {
         for (l, &i) in runs.iter().zip(picked) {
@@ -166,7 +167,7 @@ fn pair_with_eyring(
                 .friction_bound(HERTZ_AREA_OVER_LOAD)
                 .unwrap_or(f64::NAN);
             let status = l.outcome.status();
-            rows.push(Row {
+            rows.push(LimitedCase {
                 lambda_bar: *lb,
                 case: numbers[i],
                 tau_c: l.problem.tau_c(),
@@ -182,15 +183,15 @@ fn pair_with_eyring(
 }
 
 /// The points of a form: `mu_E` from Eq. (13) (`own: false`) or the case's Eyring solve.
-fn points(rows: &[Row], own: bool) -> Vec<Point> {
+fn points(rows: &[LimitedCase], own: bool) -> Vec<FormPoint> {
     rows.iter()
         .filter_map(|r| {
             let mu_e = if own {
                 r.eyring?
             } else {
-                mastercurve(r.tau_c, PAPER_C)
+                eq13_mu_bar(r.tau_c, PAPER_C)
             };
-            Some(Point {
+            Some(FormPoint {
                 mu_e,
                 mu_s: r.mu_s,
                 mu_bar: r.limited?,
@@ -201,7 +202,7 @@ fn points(rows: &[Row], own: bool) -> Vec<Point> {
 
 /// A row of `lss.csv`: one limited case beside its Eyring twin and the forms' predictions.
 #[derive(Debug, Default, Serialize)]
-struct CaseRow<'a> {
+struct LssRow<'a> {
     lambda_bar: f64,
     tau_l0_over_tau0: f64,
     case: usize,
@@ -216,10 +217,14 @@ struct CaseRow<'a> {
     status: &'a str,
 }
 
-fn cases_csv(cases: &[Row], form_eq13: Option<FormFit>, form_own: Option<FormFit>) -> String {
+fn cases_csv(
+    cases: &[LimitedCase],
+    form_eq13: Option<FormFit>,
+    form_own: Option<FormFit>,
+) -> String {
     rows(cases.iter().map(|r| {
-        let eq13 = mastercurve(r.tau_c, PAPER_C);
-        CaseRow {
+        let eq13 = eq13_mu_bar(r.tau_c, PAPER_C);
+        LssRow {
             lambda_bar: r.lambda_bar,
             tau_l0_over_tau0: TAU_L0_OVER_TAU0,
             case: r.case,
@@ -238,7 +243,7 @@ fn cases_csv(cases: &[Row], form_eq13: Option<FormFit>, form_own: Option<FormFit
 
 /// A row of `lss-fit.csv`: a form's fitted exponent and scatter.
 #[derive(Debug, Default, Serialize)]
-struct FitRow<'a> {
+struct FormFitRow<'a> {
     mu_e: &'a str,
     points: Option<usize>,
     n: Option<f64>,
@@ -248,7 +253,7 @@ struct FitRow<'a> {
 }
 
 fn fit_csv(forms: &[(&str, Option<FormFit>)]) -> String {
-    rows(forms.iter().map(|(name, f)| FitRow {
+    rows(forms.iter().map(|(name, f)| FormFitRow {
         mu_e: name,
         points: f.map(|f| f.points),
         n: f.map(|f| f.n),
@@ -260,7 +265,7 @@ fn fit_csv(forms: &[(&str, Option<FormFit>)]) -> String {
 
 /// `lss.svg`: every limited case against `tau_c`, one series per `Lambda-bar`, with the
 /// Eq. (13)-based form of each (solid) and Eq. (13) itself (dashed).
-fn svg(rows: &[Row], form: Option<FormFit>) -> Result<Option<String>, String> {
+fn svg(rows: &[LimitedCase], form: Option<FormFit>) -> Result<Option<String>, String> {
     let (lo, hi) = rows
         .iter()
         .filter(|r| r.limited.is_some())
@@ -273,7 +278,7 @@ fn svg(rows: &[Row], form: Option<FormFit>) -> Result<Option<String>, String> {
     let mut series = Vec::new();
     let mut curves = Vec::new();
     for (k, lb) in LAMBDA_BARS.iter().enumerate() {
-        let mine: Vec<&Row> = rows.iter().filter(|r| r.lambda_bar == *lb).collect();
+        let mine: Vec<&LimitedCase> = rows.iter().filter(|r| r.lambda_bar == *lb).collect();
         series.push(Series {
             label: format!("Λ\u{304} = {lb}"),
             points: mine
@@ -290,7 +295,7 @@ fn svg(rows: &[Row], form: Option<FormFit>) -> Result<Option<String>, String> {
                 points: (0..=steps)
                     .map(|i| {
                         let t = (lo.ln() + (hi.ln() - lo.ln()) * i as f64 / steps as f64).exp();
-                        (t, saturated(mastercurve(t, PAPER_C), r.mu_s, f.n))
+                        (t, saturated(eq13_mu_bar(t, PAPER_C), r.mu_s, f.n))
                     })
                     .collect(),
                 dashed: false,

@@ -13,7 +13,7 @@ pub const PAPER_C: f64 = 5.0;
 pub const FIT_TAU_C_MIN: f64 = 100.0;
 
 /// Eq. (13) (and Eq. 14) with constant `c`.
-pub fn mastercurve(tau_c: f64, c: f64) -> f64 {
+pub fn eq13_mu_bar(tau_c: f64, c: f64) -> f64 {
     (tau_c / c).asinh()
 }
 
@@ -70,7 +70,7 @@ impl Fit {
 fn sum_sq(points: &[(f64, f64)], c: f64) -> f64 {
     points
         .iter()
-        .map(|&(t, m)| (m - mastercurve(t, c)).powi(2))
+        .map(|&(t, m)| (m - eq13_mu_bar(t, c)).powi(2))
         .sum()
 }
 
@@ -153,11 +153,11 @@ pub fn fit(points: &[(f64, f64)]) -> Option<Fit> {
     let n = pts.len() as f64;
     let abs: Vec<f64> = pts
         .iter()
-        .map(|&(t, m)| m - mastercurve(t, PAPER_C))
+        .map(|&(t, m)| m - eq13_mu_bar(t, PAPER_C))
         .collect();
     let rel: Vec<f64> = pts
         .iter()
-        .map(|&(t, m)| m / mastercurve(t, PAPER_C) - 1.0)
+        .map(|&(t, m)| m / eq13_mu_bar(t, PAPER_C) - 1.0)
         .collect();
     let rms = |d: &[f64]| (d.iter().map(|d| d * d).sum::<f64>() / n).sqrt();
     let max = |d: &[f64]| d.iter().fold(0.0f64, |acc, d| acc.max(d.abs()));
@@ -229,14 +229,14 @@ mod tests {
     fn recovers_the_constant_of_exact_points() {
         let pts: Vec<(f64, f64)> = (0..30)
             .map(|i| 10f64.powf(i as f64 / 3.0 - 2.0))
-            .map(|t| (t, mastercurve(t, 4.2)))
+            .map(|t| (t, eq13_mu_bar(t, 4.2)))
             .collect();
         let f = fit(&pts).unwrap();
         // Golden section to 1e-12 in ln c; exact data.
         assert!((f.c - 4.2).abs() < 1e-6, "{}", f.c);
         let on = fit(&pts
             .iter()
-            .map(|&(t, _)| (t, mastercurve(t, 5.0)))
+            .map(|&(t, _)| (t, eq13_mu_bar(t, 5.0)))
             .collect::<Vec<_>>())
         .unwrap();
         assert!(on.rms_rel_dev < 1e-12 && on.max_rel_dev < 1e-12);
@@ -262,7 +262,7 @@ mod tests {
             .map(|i| {
                 let t = 10f64.powf(16.0 + i as f64 / 10.0);
                 let sign = if (i * 7) % 3 == 0 { 1.0 } else { -1.0 };
-                (t, mastercurve(t, 5.0) * (1.0 + 0.01 * sign))
+                (t, eq13_mu_bar(t, 5.0) * (1.0 + 0.01 * sign))
             })
             .collect();
         let f = fit(&pts).unwrap();
@@ -275,7 +275,7 @@ mod tests {
     #[test]
     fn implied_c_inverts_the_mastercurve() {
         for &(t, c) in &[(3.0, 5.0), (1e4, 2.0), (3e18, 8.4)] {
-            let m = mastercurve(t, c);
+            let m = eq13_mu_bar(t, c);
             // asinh and sinh are inverses to round-off.
             assert!((implied_c(t, m) / c - 1.0).abs() < 1e-10, "{t} {c}");
         }

@@ -15,7 +15,7 @@ pub mod refined;
 use crate::paper::artefact::{Artefact, Measure, TargetReport, LINE_LEVEL};
 use crate::paper::figures::line::solve_table3;
 use crate::paper::figures::{SweepFigure, FIG3, FIG4, FIG5, FIG6, FIG7};
-use crate::paper::mastercurve::fit::{fit, mastercurve, FIT_TAU_C_MIN, PAPER_C};
+use crate::paper::mastercurve::fit::{eq13_mu_bar, fit, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::mastercurve::oracle::{line_flat, point_flat};
 use crate::paper::mastercurve::refined::{
     band95, cross_validated, fit as fit_refined, rms_rel, Features, FigureCheck, Refined, Sample,
@@ -32,7 +32,7 @@ use serde::Serialize;
 const FIGURES: [&SweepFigure; 5] = [&FIG3, &FIG4, &FIG5, &FIG6, &FIG7];
 
 /// One case of the fit, with what the CSV reports of it.
-struct Row {
+struct FitCase {
     sample: Sample,
     contact: &'static str,
     case: usize,
@@ -43,7 +43,7 @@ struct Row {
     flat: f64,
 }
 
-fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
+fn collect(ctx: &Context) -> Result<Vec<FitCase>, String> {
     let mut rows = Vec::new();
     for fig in FIGURES {
         let figure = fig.name;
@@ -55,7 +55,7 @@ fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
             if tau_c < FIT_TAU_C_MIN {
                 continue;
             }
-            rows.push(Row {
+            rows.push(FitCase {
                 sample: Sample {
                     figure,
                     features: Features::point(&r.problem),
@@ -86,7 +86,7 @@ fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
         if tau_c < FIT_TAU_C_MIN {
             continue;
         }
-        rows.push(Row {
+        rows.push(FitCase {
             sample: Sample {
                 figure: "fig7",
                 features: Features::line(&r.problem),
@@ -106,7 +106,7 @@ fn collect(ctx: &Context) -> Result<Vec<Row>, String> {
 
 /// A row of `mastercurve.csv`: one case on Eq. (13), the flat film and the refined formula.
 #[derive(Debug, Default, Serialize)]
-struct CaseRow {
+struct MastercurveRow {
     figure: &'static str,
     contact: &'static str,
     case: usize,
@@ -127,12 +127,12 @@ struct CaseRow {
     rel_dev_refined_cv: Option<f64>,
 }
 
-fn cases_csv(cases: &[Row], all: Option<&Refined>, cv: &[Option<f64>]) -> String {
+fn cases_csv(cases: &[FitCase], all: Option<&Refined>, cv: &[Option<f64>]) -> String {
     rows(cases.iter().zip(cv).map(|(r, cv)| {
         let f = &r.sample.features;
         let mu = r.sample.mu_bar;
-        let eq13 = mastercurve(r.tau_c, PAPER_C);
-        CaseRow {
+        let eq13 = eq13_mu_bar(r.tau_c, PAPER_C);
+        MastercurveRow {
             figure: r.sample.figure,
             contact: r.contact,
             case: r.case,
@@ -158,7 +158,7 @@ fn cases_csv(cases: &[Row], all: Option<&Refined>, cv: &[Option<f64>]) -> String
 /// A row of `mastercurve-fit.csv`: the refined formula fitted on all cases, or on all but a
 /// figure's and tested on them.
 #[derive(Debug, Default, Serialize)]
-struct FitRow {
+struct RefinedFitRow {
     fitted_on: String,
     tested_on: &'static str,
     points_tested: Option<usize>,
@@ -170,16 +170,16 @@ struct FitRow {
     band95: Option<f64>,
 }
 
-impl FitRow {
+impl RefinedFitRow {
     /// The row of `refined`'s coefficients.
     fn with(refined: Option<&Refined>) -> Self {
         let k = |i: usize| refined.map(|r| r.coefficients[i]);
-        FitRow {
+        RefinedFitRow {
             a: k(0),
             b: k(1),
             c: k(2),
             d: k(3),
-            ..FitRow::default()
+            ..RefinedFitRow::default()
         }
     }
 }
@@ -189,17 +189,17 @@ fn fit_csv(
     band: Option<f64>,
     held_out: &[(FigureCheck, Option<Refined>)],
 ) -> String {
-    let everything = FitRow {
+    let everything = RefinedFitRow {
         fitted_on: "all".into(),
         band95: band,
-        ..FitRow::with(all)
+        ..RefinedFitRow::with(all)
     };
-    let each = held_out.iter().map(|(c, r)| FitRow {
+    let each = held_out.iter().map(|(c, r)| RefinedFitRow {
         fitted_on: format!("all but {}", c.figure),
         tested_on: c.figure,
         points_tested: Some(c.points),
         refined_rms_rel_dev: Some(c.refined_rms_rel_dev),
-        ..FitRow::with(r.as_ref())
+        ..RefinedFitRow::with(r.as_ref())
     });
     rows(std::iter::once(everything).chain(each))
 }

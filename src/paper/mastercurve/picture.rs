@@ -3,7 +3,7 @@
 //! in one SVG (each a nested `<svg>` at its offset, so each keeps its own coordinates).
 
 use crate::paper::mastercurve::fit::PAPER_C;
-use crate::paper::picture::{mastercurve, MU_BAR, TAU_C};
+use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series, HEIGHT, WIDTH};
 
 /// One case on the picture.
@@ -73,7 +73,7 @@ pub fn svg(points: &[CasePoint]) -> Result<String, String> {
         x_scale: Scale::Log,
         y_scale: Scale::Linear,
         series: by_series(points, |p| Some((p.tau_c, p.mu_bar))),
-        curves: vec![mastercurve(x_min, x_max, PAPER_C, 200)],
+        curves: vec![eq13_curve(x_min, x_max, PAPER_C, 200)],
         ..Figure::default()
     };
     let (r_min, r_max) = range(

@@ -13,7 +13,10 @@
 //! combination (the two are not independent draws that could be added in quadrature: the
 //! formula's residual was measured at known `alpha`).
 
-use crate::paper::mastercurve::fit::{mastercurve, PAPER_C};
+pub mod contact;
+pub mod heat;
+
+use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::refined::{Features, REFINED, REFINED_BAND};
 use crate::physics::case::{Case, CaseError, CaseForm, LubricantSpec, PhysicalCase, Problem};
 use crate::physics::lubricant::LubricantTable;
@@ -58,7 +61,7 @@ impl Estimate {
             film: FilmFormula::Eq10,
         };
         let c = characteristic(&point, lubs)?;
-        let mu_bar = mastercurve(c.tau_c, PAPER_C);
+        let mu_bar = eq13_mu_bar(c.tau_c, PAPER_C);
         let problem = Problem::from_case(case, lubs)?;
         let mu_bar_refined = REFINED.predict(&Features::point(&problem));
         Ok((
