@@ -11,7 +11,7 @@ use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 /// Typical wall time of one solve on one core, s, by level: the development machine's
-/// benchmarks (README, "What accuracy costs"), rounded up. For the estimate printed only.
+/// benchmarks (docs/RESULTS.md, "What accuracy costs"), rounded up. For the estimate printed only.
 fn typical_seconds(level: u32) -> f64 {
     match level {
         0..=5 => 0.5,

@@ -194,7 +194,7 @@ pub struct TargetArgs {
 
 #[derive(Debug, Args)]
 pub struct RunArgs {
-    /// The sweep file (TOML, the format of cases/*.toml; see the README).
+    /// The sweep file (TOML, the format of cases/*.toml; see docs/my-study.toml).
     pub file: PathBuf,
     #[command(flatten)]
     pub target: TargetArgs,
