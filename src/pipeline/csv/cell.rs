@@ -53,6 +53,34 @@ macro_rules! refuse_scalars {
     };
 }
 
+/// The methods of a [`Serializer`] that refuse sequences and tuples with `refuse()`.
+macro_rules! refuse_sequences {
+    ($refuse:ident) => {
+        fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, CellError> {
+            $refuse()
+        }
+        fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, CellError> {
+            $refuse()
+        }
+        fn serialize_tuple_struct(
+            self,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Self::SerializeTupleStruct, CellError> {
+            $refuse()
+        }
+        fn serialize_tuple_variant(
+            self,
+            _: &'static str,
+            _: u32,
+            _: &'static str,
+            _: usize,
+        ) -> Result<Self::SerializeTupleVariant, CellError> {
+            $refuse()
+        }
+    };
+}
+
 /// The methods of the cell [`Serializer`] that write a value as its `Display` does.
 macro_rules! as_text {
     ($($method:ident: $t:ty),*) => {
@@ -170,28 +198,7 @@ impl Serializer for &mut RowCells {
     ) -> Result<(), CellError> {
         not_a_row()
     }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, CellError> {
-        not_a_row()
-    }
-    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, CellError> {
-        not_a_row()
-    }
-    fn serialize_tuple_struct(
-        self,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleStruct, CellError> {
-        not_a_row()
-    }
-    fn serialize_tuple_variant(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleVariant, CellError> {
-        not_a_row()
-    }
+    refuse_sequences!(not_a_row);
     fn serialize_map(self, _: Option<usize>) -> Result<Self, CellError> {
         Ok(self)
     }
@@ -277,28 +284,7 @@ impl Serializer for Cell {
     ) -> Result<String, CellError> {
         not_a_cell()
     }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, CellError> {
-        not_a_cell()
-    }
-    fn serialize_tuple(self, _: usize) -> Result<Self::SerializeTuple, CellError> {
-        not_a_cell()
-    }
-    fn serialize_tuple_struct(
-        self,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleStruct, CellError> {
-        not_a_cell()
-    }
-    fn serialize_tuple_variant(
-        self,
-        _: &'static str,
-        _: u32,
-        _: &'static str,
-        _: usize,
-    ) -> Result<Self::SerializeTupleVariant, CellError> {
-        not_a_cell()
-    }
+    refuse_sequences!(not_a_cell);
     fn serialize_map(self, _: Option<usize>) -> Result<Self::SerializeMap, CellError> {
         not_a_cell()
     }
