@@ -1,4 +1,4 @@
-//! The form of the friction curve with a limiting shear stress (issue 19, beyond the paper).
+//! The form of the friction curve with a limiting shear stress (beyond the paper).
 //!
 //! With a limit the reduced friction can no longer follow one curve in `tau_c`: it cannot
 //! exceed the saturated value `mu_S = Lambda-bar + 1.5 tau_L0 / tau0` (the Hertzian circle's

@@ -1,4 +1,4 @@
-//! The `lss` target (beyond the paper, issue 19): the paper's first future-work item. The
+//! The `lss` target (beyond the paper): the paper's first future-work item. The
 //! Table 2 sweep of mineral oil A (Fig. 4's cases) solved again with a limiting shear stress
 //! `tau_L = tau_L0 + Lambda p` at several `Lambda-bar = Lambda p_H / tau0` (each case at one
 //! of them, rotating), with `tau_L0 = tau0`, sliding `mu-bar` against `tau_c`, and the form of the curve found

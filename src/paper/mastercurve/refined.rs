@@ -23,7 +23,7 @@
 //!
 //! The fit runs inside the pipeline (the `mastercurve` target, on the computed cases); the
 //! coefficients `repro predict` uses are [`REFINED`], copied from the level-7 fit, and a test
-//! (tests/refined.rs) refits them from `figures/mastercurve.csv` and checks they agree, so
+//! (tests/mastercurve.rs) refits them from `figures/mastercurve.csv` and checks they agree, so
 //! they cannot drift from the data without a failing test. `predict` cannot run the fit itself:
 //! it would need every level-7 solve.
 
@@ -92,13 +92,13 @@ pub struct Refined {
 }
 
 /// The coefficients of the level-7 fit (`repro mastercurve --level 7`, figures/mastercurve-fit.csv),
-/// used by `repro predict`; tests/refined.rs refits them.
+/// used by `repro predict`; tests/mastercurve.rs refits them.
 pub const REFINED: Refined = Refined {
     coefficients: [1.003263e0, -7.634000e-2, 4.121627e-1, -3.874257e-1],
 };
 
 /// Half-width of `repro predict`'s band, relative: the 95th percentile of the cross-validated
-/// relative residuals of the level-7 fit (figures/mastercurve-fit.csv; tests/refined.rs).
+/// relative residuals of the level-7 fit (figures/mastercurve-fit.csv; tests/mastercurve.rs).
 pub const REFINED_BAND: f64 = 4.784142e-2;
 
 impl Refined {
