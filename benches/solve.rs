@@ -10,14 +10,15 @@
 //! minute of single solves).
 
 use criterion::{BenchmarkId, Criterion};
-use repro::artefacts::accuracy::{study_cases, Contact};
-use repro::artefacts::target::Context;
-use repro::artefacts::targets::build;
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::paper::accuracy::cases::{accuracy_cases, AccuracyProblem};
+use repro::paper::build;
+use repro::paper::figures::FIG7;
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use repro::physics::density::DensityLaw;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::physics::viscosity::ViscosityLaw;
+use repro::pipeline::context::Context;
 use repro::solver::point::{solve, Params};
 use std::time::Duration;
 
@@ -27,7 +28,7 @@ fn full() -> bool {
 }
 
 fn levels(c: &mut Criterion) {
-    let cases = study_cases(false).expect("the shipped cases resolve");
+    let cases = accuracy_cases(false).expect("the shipped cases resolve");
     let levels: &[u32] = if full() { &[5, 6, 7] } else { &[5] };
     let mut group = c.benchmark_group("solve");
     group.sample_size(10);
@@ -49,8 +50,8 @@ fn levels(c: &mut Criterion) {
 
 /// The Table 4 case with one effect swapped for its cheaper alternative.
 fn effects(c: &mut Criterion) {
-    let cases = study_cases(false).expect("the shipped cases resolve");
-    let Some(Contact::Point { problem, .. }) = cases
+    let cases = accuracy_cases(false).expect("the shipped cases resolve");
+    let Some(AccuracyProblem::Point { problem, .. }) = cases
         .iter()
         .find(|c| c.name == "table4")
         .map(|c| &c.contact)
@@ -125,7 +126,7 @@ fn effects(c: &mut Criterion) {
 fn target(c: &mut Criterion) {
     let level = if full() { 5 } else { 4 };
     let out = std::env::temp_dir().join(format!("repro-bench-{}", std::process::id()));
-    let progress = |_: &str, _: repro::artefacts::run::RunProgress| {};
+    let progress = |_: &str, _: repro::pipeline::executor::RunProgress| {};
     let warn = |_: String| {};
     let ctx = Context {
         out: out.clone(),
@@ -140,7 +141,7 @@ fn target(c: &mut Criterion) {
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(30));
     group.bench_function(format!("fig7-level{level}-cold"), |b| {
-        b.iter(|| build("fig7", &ctx).expect("fig7 builds"))
+        b.iter(|| build(&FIG7, &ctx).expect("fig7 builds"))
     });
     group.finish();
     let _ = std::fs::remove_dir_all(out);
@@ -152,7 +153,7 @@ fn target(c: &mut Criterion) {
 fn hard_case(c: &mut Criterion) {
     let rx = 1.03875e-2;
     let case = Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: "5p4e".into(),
                 temperature_c: 40.0,
@@ -183,13 +184,13 @@ fn hard_case(c: &mut Criterion) {
 /// parameters: the figures' defaults) and the Newtonian M = 20, L = 10 rolling contact
 /// (Barus, incompressible: the case of the Venner-Lubrecht FMG code) at levels 7 and 8.
 fn speed(c: &mut Criterion) {
-    let table4 = repro::artefacts::table4::Table4Case::shipped()
+    let table4 = repro::paper::table4::Table4Case::shipped()
         .expect("cases/table4.toml")
         .problem()
         .expect("the Table 4 case resolves");
     let newtonian = Problem::from_case(
         &Case {
-            spec: Spec::Dimensionless(repro::physics::case::DimensionlessCase {
+            spec: CaseForm::Dimensionless(repro::physics::case::DimensionlessCase {
                 m: 20.0,
                 l: 10.0,
                 s_bar: 0.0,

@@ -17,7 +17,7 @@ fn main() {
     let (case, k) = if a[1] == "d" {
         (
             Case {
-                spec: Spec::Dimensionless(DimensionlessCase {
+                spec: CaseForm::Dimensionless(DimensionlessCase {
                     m: f(2),
                     l: f(3),
                     s_bar: f(4),
@@ -33,7 +33,7 @@ fn main() {
     } else {
         (
             Case {
-                spec: Spec::Physical(PhysicalCase {
+                spec: CaseForm::Physical(PhysicalCase {
                     lubricant: if a[2] == "given" {
                         // `given T` takes alpha (1/Pa) and eta0 (Pa s) from PROBE_ALPHA, PROBE_ETA0.
                         let env = |k: &str| std::env::var(k).unwrap().parse::<f64>().unwrap();

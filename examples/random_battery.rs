@@ -9,7 +9,9 @@
 //! (`light`: the light, viscous corner, `p_H` 0.3-0.6 GPa, `u_m` 3-30 m/s, `eta0` 0.1-1 Pa s);
 //! `alpha` 8-40 /GPa and `D = Rx/Ry` 0.1-1 uniform; `Rx` 10.4 mm, `E'` 226 GPa; Roelands,
 //! Dowson-Higginson, Eyring (the physics of Figs. 4-7).
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec as CaseSpec};
+use repro::physics::case::{
+    Case, CaseForm as CaseSpec, LubricantSpec, PhysicalCase, Physics, Problem,
+};
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::point;
 use std::sync::Mutex;

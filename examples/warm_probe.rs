@@ -7,17 +7,17 @@
 //! base at S-bar 0.1; Barus, incompressible, Eyring);
 //! `TIGHT` 1 solves the cold members with the output rule off (to a mean residual of 1e-6,
 //! or by Newton-Krylov), the reference a warm solve is judged against.
-use repro::artefacts::base::base_of;
 use repro::physics::case::{
-    Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
+    Case, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
 use repro::physics::lubricant::LubricantTable;
+use repro::pipeline::base::base_of;
 use repro::solver::point::{self, Params, Start};
 use std::time::Instant;
 
 fn case(lubricant: &str, t: f64, ph: f64, um: f64, slip: f64, tau0: f64) -> Case {
     Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: lubricant.into(),
                 temperature_c: t,
@@ -36,7 +36,7 @@ fn case(lubricant: &str, t: f64, ph: f64, um: f64, slip: f64, tau0: f64) -> Case
 
 fn moes(m: f64, l: f64, s_bar: f64) -> Case {
     Case {
-        spec: Spec::Dimensionless(DimensionlessCase {
+        spec: CaseForm::Dimensionless(DimensionlessCase {
             m,
             l,
             s_bar,

@@ -2,10 +2,10 @@
 //! Eyring stress is caught, and neither the thread count nor a rerun changes a result.
 
 use crate::support::repro;
-use repro::artefacts::run::{run_cases, CaseRun, Store};
-use repro::artefacts::snapshot::compare;
-use repro::artefacts::sweep::Sweep;
-use repro::artefacts::targets::figure::runs_csv;
+use repro::paper::figures::{rows, Plot};
+use repro::pipeline::executor::{run_cases, CachePolicy, PointRun};
+use repro::pipeline::snapshot::compare;
+use repro::pipeline::sweep::Sweep;
 use std::path::PathBuf;
 
 fn scratch(name: &str) -> PathBuf {
@@ -90,13 +90,18 @@ fn csv_of(sweep: &Sweep, threads: usize) -> String {
         .num_threads(threads)
         .build()
         .expect("pool");
-    let runs: Vec<CaseRun> = pool.install(|| {
-        run_cases("test", &sweep.cases, 5, Store::Nothing, &|_| {}, &|_| {}).expect("runs")
+    let runs: Vec<PointRun> = pool.install(|| {
+        run_cases(
+            "test",
+            &sweep.cases,
+            5,
+            CachePolicy::Ignore,
+            &|_| {},
+            &|_| {},
+        )
+        .expect("runs")
     });
-    runs_csv(&runs, "tau_c_x", "mu_bar_sliding_y", |r| {
-        r.record()
-            .map(|rec| (r.problem.tau_c(), rec.mu_bar_sliding))
-    })
+    rows::csv(&runs, Plot::SLIDING)
 }
 
 /// Each case is solved serially on one thread: one thread, two threads and a rerun give the

@@ -9,20 +9,22 @@
 //! or by Newton-Krylov), so the two differ by the warm solve's algebraic error alone. Levels
 //! 5 and 6 keep each solve under a few seconds; the paths are the same at every level.
 
-use repro::artefacts::base::base_of;
+use repro::paper::cases::shipped_sweep;
 use repro::physics::case::{
-    Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
+    Case, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
+use repro::pipeline::base::{base_of, BASE_S_BAR};
 use repro::solver::output::{Method, StartKind};
 use repro::solver::point::{self, Params, PointSolution, Start};
+use std::collections::BTreeMap;
 
 const TOLERANCE: f64 = 5e-4;
 
 fn physical(lubricant: &str, t: f64, ph_gpa: f64, um: f64, slip: f64, tau0_mpa: f64) -> Case {
     Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: lubricant.into(),
                 temperature_c: t,
@@ -149,7 +151,7 @@ fn a_figs_1_to_3_family_starts_from_s_bar_0_1_across_two_decades() {
     // base at 0.1, level 6.
     for s_bar in [0.01, 1.0] {
         let case = Case {
-            spec: Spec::Dimensionless(DimensionlessCase {
+            spec: CaseForm::Dimensionless(DimensionlessCase {
                 m: 1000.0,
                 l: 10.0,
                 s_bar,
@@ -175,4 +177,65 @@ fn a_start_that_does_not_fit_the_grid_solves_cold() {
     assert_eq!(s.info.start, StartKind::Cold);
     let cold = point::solve(&p, &Params::for_problem(&p, 6), None).expect("converges");
     assert_eq!(s.film.h_central.to_bits(), cold.film.h_central.to_bits());
+}
+
+// The base of a case, on the shipped sweeps.
+
+#[test]
+fn every_table_2_family_has_its_base_among_its_nine_members() {
+    for fig in ["fig4", "fig5", "fig6"] {
+        let cases = shipped_sweep(fig).unwrap().cases;
+        let mut families: BTreeMap<String, Vec<&Case>> = BTreeMap::new();
+        for c in &cases {
+            let key = match base_of(c) {
+                Some(b) => serde_json::to_string(&b).unwrap(),
+                None => serde_json::to_string(c).unwrap(),
+            };
+            families.entry(key).or_default().push(c);
+        }
+        assert_eq!(families.len(), 27, "{fig}: 27 families");
+        for (base, members) in &families {
+            assert_eq!(members.len(), 9, "{fig}: {base}");
+            let own = members.iter().filter(|c| base_of(c).is_none()).count();
+            assert_eq!(own, 1, "{fig}: one member is the base: {base}");
+        }
+    }
+}
+
+#[test]
+fn figs_1_to_3_families_keep_m_l_and_the_eyring_stress() {
+    let cases = shipped_sweep("fig1-3").unwrap().cases;
+    let mut bases = 0;
+    for c in &cases {
+        let CaseForm::Dimensionless(d) = &c.spec else {
+            panic!("Figs. 1-3 are in Moes groups")
+        };
+        match base_of(c) {
+            None => {
+                assert_eq!(d.s_bar, BASE_S_BAR);
+                bases += 1;
+            }
+            Some(b) => {
+                let CaseForm::Dimensionless(db) = &b.spec else {
+                    panic!()
+                };
+                assert_eq!((db.m, db.l, db.d, db.s_bar), (d.m, d.l, d.d, BASE_S_BAR));
+                // The dimensionless Eyring stress S / S-bar is kept (2 in Figs. 1-3).
+                assert!((db.slip / db.s_bar - d.slip / d.s_bar).abs() < 1e-12);
+            }
+        }
+    }
+    assert_eq!(bases, 25, "one base per (M, L)");
+}
+
+#[test]
+fn a_limited_case_has_its_eyring_twin_for_base() {
+    let mut c = shipped_sweep("fig4").unwrap().cases[0].clone();
+    c.physics.rheology = Rheology::EyringLss(LimitingShearStress {
+        lambda: 0.08,
+        tau_l0_pa: 5e6,
+    });
+    let twin = base_of(&c).unwrap();
+    assert_eq!(twin.physics.rheology, Rheology::Eyring);
+    assert_eq!(twin.spec, c.spec);
 }

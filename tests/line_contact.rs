@@ -2,8 +2,8 @@
 //! Fig. 7, the point-contact trend in Rx/Ry, and `repro solve --line`.
 
 use crate::support::{repro, SOLVE_KEYS};
-use repro::artefacts::line_cases::table3_line_cases;
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::paper::figures::line::table3_line_cases;
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use repro::physics::line_contact::LineProblem;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::line;
@@ -37,7 +37,7 @@ fn point_case(d: f64) -> Case {
     // Table 3, third row: mineral oil A, 2 GPa, 40 C, 7 m/s, S = 0.1 %, tau0 = 8 MPa.
     let rx = 1.03875e-2;
     Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: "mineral-oil-a".into(),
                 temperature_c: 40.0,

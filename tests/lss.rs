@@ -4,8 +4,8 @@
 //! oracle with the saturated stress follows the solver.
 
 use crate::support::repro;
-use repro::artefacts::line_cases::table3_line_cases;
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use repro::paper::figures::line::table3_line_cases;
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use repro::physics::flat_film::{ln_couette_centre, mu_bar_flat, Geometry};
 use repro::physics::line_contact::{LineEyringFlow, LineProblem};
 use repro::physics::lubricant::LubricantTable;
@@ -17,7 +17,7 @@ use repro::solver::{line, point};
 fn case(rheology: Rheology) -> Problem {
     let rx = 1.03875e-2;
     let case = Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: "mineral-oil-a".into(),
                 temperature_c: 40.0,
@@ -256,10 +256,10 @@ rx_m = [1.03875e-2]
 d = [1.0]
 e_prime_gpa = [226.0]
 "#;
-    let sweep = repro::artefacts::sweep::Sweep::parse("limited.toml", text).expect("valid");
+    let sweep = repro::pipeline::sweep::Sweep::parse("limited.toml", text).expect("valid");
     assert_eq!(sweep.cases[0].physics.rheology, lss(0.08, 5e6));
     // A misspelt parameter is refused, naming it.
     let bad = text.replace("tau_l0_pa", "tau_l0");
-    let e = repro::artefacts::sweep::Sweep::parse("limited.toml", &bad).unwrap_err();
+    let e = repro::pipeline::sweep::Sweep::parse("limited.toml", &bad).unwrap_err();
     assert!(e.to_string().contains("tau_l0"), "{e}");
 }

@@ -2,9 +2,9 @@
 //! datasheet flags, the same oil through a study file, and errors that name the flag or field.
 
 use crate::support::{repro, with_flags};
-use repro::artefacts::sweep::Sweep;
-use repro::physics::case::{Problem, Spec};
+use repro::physics::case::{CaseForm, Problem};
 use repro::physics::lubricant::LubricantTable;
+use repro::pipeline::sweep::Sweep;
 use std::path::Path;
 
 /// docs/gear-oil-study.toml: an ISO VG 68, VI 97 mineral gear oil, 880 kg/m^3 at 15 C.
@@ -143,7 +143,7 @@ fn the_same_oil_through_a_study_gives_the_same_eta0_alpha_and_groups_bit_for_bit
     // The grid's last key is fastest: case 14 is 80 C, 1.5 GPa, 2 m/s, S 2 %, the contact
     // of `CONTACT`.
     let case = &sweep.cases[13];
-    let Spec::Physical(p) = &case.spec else {
+    let CaseForm::Physical(p) = &case.spec else {
         panic!("physical")
     };
     assert_eq!(

@@ -2,10 +2,10 @@
 //! `figures/`: the flat-film oracle against the solvers' friction, and the refined formula's
 //! committed coefficients against a refit of the computed cases.
 
-use repro::artefacts::csv::reader;
-use repro::artefacts::refined::{
+use repro::paper::mastercurve::refined::{
     band95, cross_validated, fit, rms_rel, Features, Sample, REFINED, REFINED_BAND,
 };
+use repro::pipeline::csv::reader;
 use std::collections::HashMap;
 
 /// The rows of a committed figure CSV as maps from column to cell.
@@ -38,7 +38,7 @@ fn num(row: &HashMap<String, String>, col: &str) -> f64 {
         .unwrap_or_else(|_| panic!("column {col}: '{}'", row[col]))
 }
 
-/// The Eyring regime of the fits (`artefacts::fit::FIT_TAU_C_MIN`).
+/// The Eyring regime of the fits (`paper::mastercurve::fit::FIT_TAU_C_MIN`).
 const TAU_C_MIN: f64 = 100.0;
 
 /// Film `H` (over the Hertzian approach) from which on the flat-film estimate is not tested.
@@ -152,7 +152,7 @@ fn committed_refined_coefficients_are_the_refit_of_the_computed_cases() {
         // coefficient; a change of the data by 1 % moves them by more than 1e-3.
         assert!(
             (committed - refit).abs() <= 1e-4 * refit.abs().max(0.1),
-            "committed {committed} vs refit {refit}: update REFINED (src/artefacts/refined.rs)"
+            "committed {committed} vs refit {refit}: update REFINED (src/paper/mastercurve/refined.rs)"
         );
     }
     let cv = cross_validated(&s);

@@ -11,12 +11,15 @@
 //! print floats in shortest round-trip form, so any difference is a different path.
 
 use crate::support::{repro, repro_in};
-use repro::artefacts::accuracy::{pipeline_params, study_cases, Contact, Measured};
-use repro::artefacts::cache::{Cache, Lookup};
-use repro::artefacts::run::{point_jobs, Outcome, Record};
-use repro::artefacts::sweep::Sweep;
+use repro::paper::accuracy::cases::{
+    accuracy_cases, pipeline_params, AccuracyProblem, LevelOutputs,
+};
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
+use repro::pipeline::cache::{Cache, Lookup};
+use repro::pipeline::job::point_jobs;
+use repro::pipeline::outcome::{CaseOutcome, SolvedCase};
+use repro::pipeline::sweep::Sweep;
 use std::path::{Path, PathBuf};
 
 const LEVEL: u32 = 5;
@@ -130,7 +133,7 @@ impl Outputs {
         }
     }
 
-    fn of_record(r: &Record) -> Self {
+    fn of_record(r: &SolvedCase) -> Self {
         Outputs {
             h_central: r.h_central,
             hc_moes: Some(r.hc_moes),
@@ -140,7 +143,7 @@ impl Outputs {
     }
 
     /// The accuracy study measures the central film and sliding `mu-bar` only.
-    fn of_measured(m: &Measured) -> Self {
+    fn of_measured(m: &LevelOutputs) -> Self {
         Outputs {
             h_central: m.h_central,
             hc_moes: None,
@@ -220,14 +223,15 @@ fn study(name: &str, text: &str) -> Outputs {
     let cache = Cache::new(dir.join("cache"));
     // The point's own entry (a point that is not its own base has its base's entry beside it).
     let sweep = Sweep::parse("one-rule.toml", text).expect("a valid study");
-    let (job, _) = point_jobs(&sweep.cases, LEVEL)
+    let job = point_jobs(&sweep.cases, LEVEL)
         .expect("the study's job")
-        .remove(0);
+        .remove(0)
+        .job;
     let keys = cache.keys().expect("the study's cache");
     let entries = if job.base.is_some() { 2 } else { 1 };
     assert_eq!(keys.len(), entries, "its entry and its base's: {keys:?}");
-    let bits = match cache.get::<Outcome>(&job.key) {
-        Lookup::Hit(Outcome::Solved(r), _) => Outputs::of_record(&r),
+    let bits = match cache.get::<CaseOutcome>(&job.key) {
+        Lookup::Hit(CaseOutcome::Solved(r), _) => Outputs::of_record(&r),
         other => panic!("repro run: {other:?}"),
     };
     let _ = std::fs::remove_dir_all(&dir);
@@ -235,7 +239,7 @@ fn study(name: &str, text: &str) -> Outputs {
 }
 
 /// The accuracy study's pipeline ([`pipeline_params`]) on `contact` at level 5.
-fn accuracy(contact: &Contact) -> Outputs {
+fn accuracy(contact: &AccuracyProblem) -> Outputs {
     Outputs::of_measured(
         &contact
             .solve(LEVEL)
@@ -252,7 +256,7 @@ fn every_path_solves_the_5p4e_contact_alike() {
     let problem =
         Problem::from_case(&sweep.cases[0], &LubricantTable::table1()).expect("a valid case");
     assert!(problem.groups.m < 10.0, "M = {}", problem.groups.m);
-    let by_accuracy = accuracy(&Contact::Point {
+    let by_accuracy = accuracy(&AccuracyProblem::Point {
         problem: Box::new(problem),
         params: pipeline_params,
     });
@@ -270,7 +274,7 @@ fn every_path_solves_the_light_barus_case_alike() {
     // `repro predict` takes the physical form only: this case goes through the other paths.
     let by_solve = solve(&FLAGS_LIGHT);
     let by_study = study("light", STUDY_LIGHT);
-    let cases = study_cases(false).expect("the accuracy study's cases");
+    let cases = accuracy_cases(false).expect("the accuracy study's cases");
     let light = cases
         .iter()
         .find(|c| c.name == "light-barus")
@@ -310,7 +314,7 @@ fn every_path_starts_a_family_member_from_its_base_alike() {
     let sweep = Sweep::parse("one-rule.toml", &member).expect("a valid study");
     let problem =
         Problem::from_case(&sweep.cases[0], &LubricantTable::table1()).expect("a valid case");
-    let by_accuracy = accuracy(&Contact::Point {
+    let by_accuracy = accuracy(&AccuracyProblem::Point {
         problem: Box::new(problem),
         params: pipeline_params,
     });

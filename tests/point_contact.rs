@@ -2,9 +2,9 @@
 //! and the hard cases of the paper's parameter range.
 
 use crate::support::appendix_problem;
-use repro::artefacts::table4::{self, Table4Case};
+use repro::paper::table4::{self, Table4Case};
 use repro::physics::case::{
-    Case, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
+    Case, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
 use repro::physics::film::hc_nijenbanning;
 use repro::physics::lubricant::LubricantTable;
@@ -19,7 +19,7 @@ fn problem(case: &Case) -> Problem {
 
 fn dimensionless(m: f64, l: f64, s_bar: f64, rheology: Rheology) -> Case {
     Case {
-        spec: Spec::Dimensionless(DimensionlessCase {
+        spec: CaseForm::Dimensionless(DimensionlessCase {
             m,
             l,
             s_bar,
@@ -46,7 +46,7 @@ fn physical(
 ) -> Case {
     let rx = 1.03875e-2;
     Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Named {
                 lubricant: lubricant.into(),
                 temperature_c,
@@ -90,7 +90,7 @@ fn table4_levels_5_and_6_agree_with_the_paper() {
     let spec = Table4Case::shipped().unwrap();
     let rows = table4::compute(&spec, &[5, 6], |_| {}).unwrap();
     for row in &rows {
-        let s = row.outcome.record().expect("Table 4 level solves");
+        let s = row.outcome.solved().expect("Table 4 level solves");
         let (paper_hc, paper_mu) = row.paper().unwrap();
         let (next_hc, next_mu) = table4::paper_at(row.level + 1).unwrap();
         // Two implementations of the same discretisation differ by much less than the
@@ -113,8 +113,8 @@ fn table4_levels_5_and_6_agree_with_the_paper() {
     }
     // Second-order trend: the level-6 film is below the level-7 paper value by more than the
     // level-5 one is below level 6 divided by 4 (first order would give half, not a quarter).
-    let hc5 = rows[0].outcome.record().unwrap().h_central;
-    let hc6 = rows[1].outcome.record().unwrap().h_central;
+    let hc5 = rows[0].outcome.solved().unwrap().h_central;
+    let hc6 = rows[1].outcome.solved().unwrap().h_central;
     assert!(hc6 > hc5, "film must grow with resolution: {hc5} -> {hc6}");
 }
 
@@ -297,7 +297,7 @@ fn hard_case_a_users_very_viscous_oil_on_an_ellipse() {
     // 2.5 GPa, Rx/Ry = 1/2.
     let rx = 1.03875e-2;
     let c = Case {
-        spec: Spec::Physical(PhysicalCase {
+        spec: CaseForm::Physical(PhysicalCase {
             lubricant: LubricantSpec::Given {
                 alpha_per_pa: 3.5e-8,
                 eta0_pa_s: 2.0,

@@ -4,8 +4,12 @@
 //! different result; `repro slurm` writes the scripts of the same run.
 
 use crate::support::repro;
-use repro::artefacts::cache::{Cache, Stamp};
-use repro::artefacts::run::Outcome;
+use repro::paper::cases::shipped_sweep;
+use repro::pipeline::cache::{Cache, Stamp};
+use repro::pipeline::job::{point_jobs, Job};
+use repro::pipeline::outcome::{CaseOutcome, Failure, FailureKind};
+use repro::pipeline::shard::Shard;
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -168,10 +172,11 @@ fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
 
     // A different result under a key the merged cache has: refused, named, exit 1.
     let key = keys(&shards[0])[0].clone();
-    let other = Outcome::Failed {
+    let other = CaseOutcome::Failed(Failure {
+        kind: FailureKind::NotConverged,
         error: "not converged (edited)".into(),
         residual_history: vec![1.0],
-    };
+    });
     Cache::new(&shards[0])
         .put(&key, &other, &Stamp::now(0.0))
         .expect("write");
@@ -241,4 +246,54 @@ fn slurm_writes_an_array_a_dependent_assembly_and_says_how_to_submit() {
     assert_eq!(code, 2);
     assert!(err.contains("unknown target 'nofig'"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Fig. 4's jobs at level 5.
+fn fig4_jobs() -> Vec<Job> {
+    let sweep = shipped_sweep("fig4").unwrap();
+    point_jobs(&sweep.cases, 5)
+        .unwrap()
+        .into_iter()
+        .map(|p| p.job)
+        .collect()
+}
+
+#[test]
+fn shards_partition_the_families_evenly() {
+    let jobs = fig4_jobs();
+    let mut doubled = jobs.clone();
+    doubled.extend(jobs.iter().cloned()); // a case listed twice is solved once
+    for count in [1, 3, 7] {
+        let mut all: Vec<String> = Vec::new();
+        let mut families = Vec::new();
+        let mut owner: BTreeSet<(String, usize)> = BTreeSet::new();
+        for index in 1..=count {
+            let share = Shard::new(index, count).unwrap().select(doubled.clone());
+            let mine: BTreeSet<String> = share.iter().map(|j| j.family().to_string()).collect();
+            families.push(mine.len());
+            owner.extend(mine.into_iter().map(|f| (f, index)));
+            all.extend(share.into_iter().map(|j| j.key));
+        }
+        all.sort();
+        let mut expect: Vec<String> = jobs.iter().map(|j| j.key.clone()).collect();
+        expect.sort();
+        assert_eq!(all, expect, "{count} shards: every case once");
+        // Fig. 4's 27 families of nine, each in one shard, the shards within one family.
+        assert_eq!(owner.len(), 27, "{count} shards: a family split");
+        let (lo, hi) = (
+            families.iter().min().unwrap(),
+            families.iter().max().unwrap(),
+        );
+        assert!(hi - lo <= 1, "{count} shards: families {families:?}");
+    }
+    // The same list gives the same share in any order.
+    let mut reversed = jobs.clone();
+    reversed.reverse();
+    let keys = |v: Vec<Job>| {
+        let mut k: Vec<String> = v.into_iter().map(|j| j.key).collect();
+        k.sort();
+        k
+    };
+    let s = Shard::new(2, 5).unwrap();
+    assert_eq!(keys(s.select(jobs)), keys(s.select(reversed)));
 }

@@ -1,6 +1,6 @@
 //! What the integration tests share: running the `repro` binary.
 
-use repro::artefacts::table4::Table4Case;
+use repro::paper::table4::Table4Case;
 use repro::physics::case::Problem;
 use std::path::Path;
 use std::process::Command;

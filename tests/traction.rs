@@ -3,9 +3,9 @@
 //! shear rate from the computed film), parsed and transformed back, must return the solver's
 //! own tau_c (Eq. 12) and mu-bar (Eq. 8).
 
-use repro::artefacts::measured::{parse, transform};
-use repro::artefacts::sweep::shipped_sweep;
-use repro::physics::case::{LubricantSpec, Problem, Spec};
+use repro::paper::cases::shipped_sweep;
+use repro::paper::fig8::reader::{parse, transform};
+use repro::physics::case::{CaseForm, LubricantSpec, Problem};
 use repro::physics::film::hc_eq10;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::point::{solve, Params};
@@ -42,7 +42,7 @@ fn solver_results_written_as_measured_rows_transform_back() {
     // Table 3 cases 1, 3 and 4 at Rx/Ry = 1/2: three decades of tau_c.
     for i in [0, 2, 3] {
         let case = &sweep.cases[i];
-        let Spec::Physical(p) = &case.spec else {
+        let CaseForm::Physical(p) = &case.spec else {
             panic!("Table 3 cases are physical")
         };
         let LubricantSpec::Named {

@@ -1,11 +1,10 @@
-//! `repro accuracy`: the level study of [`repro::artefacts::accuracy`], its files and summary.
+//! `repro accuracy`: the level study of [`repro::paper::accuracy`], its files and summary.
 
 use super::args::AccuracyArgs;
 use super::config::check_level;
 use anyhow::{bail, Context as _, Result};
-use repro::artefacts::accuracy::{self, MU_TOLERANCE};
-use repro::artefacts::csv::write_atomic;
-use repro::artefacts::plot;
+use repro::paper::accuracy::{self, MU_TOLERANCE};
+use repro::pipeline::csv::write_atomic;
 
 /// Runs the study; false when a case converged at none of its levels.
 pub fn run(args: &AccuracyArgs) -> Result<bool> {
@@ -15,9 +14,9 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
     if args.repeats == 0 {
         bail!("--repeats: must be at least 1");
     }
-    let cases = accuracy::study_cases(!args.no_line).map_err(anyhow::Error::msg)?;
+    let cases = accuracy::cases::accuracy_cases(!args.no_line).map_err(anyhow::Error::msg)?;
     let quiet = args.quiet;
-    let mut progress = |c: &accuracy::StudyCase, r: &accuracy::LevelRun| {
+    let mut progress = |c: &accuracy::AccuracyCase, r: &accuracy::LevelRun| {
         if quiet {
             return;
         }
@@ -35,11 +34,14 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
     let studies = accuracy::run(&cases, &args.levels.0, args.repeats, &mut progress);
     let recs = accuracy::recommend(&studies, MU_TOLERANCE);
     let files = [
-        ("accuracy.csv", accuracy::to_csv(&studies)),
-        ("accuracy_levels.csv", accuracy::recommendations_csv(&recs)),
+        ("accuracy.csv", accuracy::files::to_csv(&studies)),
+        (
+            "accuracy_levels.csv",
+            accuracy::files::recommendations_csv(&recs),
+        ),
         (
             "accuracy.svg",
-            plot::accuracy::svg(&studies).map_err(anyhow::Error::msg)?,
+            accuracy::picture::svg(&studies).map_err(anyhow::Error::msg)?,
         ),
     ];
     for (name, text) in &files {
@@ -47,7 +49,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
         write_atomic(&path, text)
             .with_context(|| format!("--out: cannot write {}", path.display()))?;
     }
-    print!("{}", accuracy::to_text(&studies, &recs));
+    print!("{}", accuracy::files::to_text(&studies, &recs));
     println!(
         "wrote {}",
         files

@@ -2,8 +2,8 @@
 
 use super::args::{CacheArgs, CacheCommand, MergeArgs};
 use anyhow::{anyhow, Result};
-use repro::artefacts::cache::Cache;
-use repro::artefacts::merge::merge;
+use repro::pipeline::cache::Cache;
+use repro::pipeline::merge::merge;
 
 /// `repro cache ...`.
 pub fn run(args: &CacheArgs) -> Result<bool> {

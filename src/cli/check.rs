@@ -3,10 +3,10 @@
 use super::args::{CheckArgs, TargetArgs};
 use super::print::summary_line;
 use super::progress::in_context;
-use anyhow::{bail, Result};
-use repro::artefacts::report;
-use repro::artefacts::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
-use repro::artefacts::targets::{self, TARGETS};
+use anyhow::Result;
+use repro::paper::{self, known, Artefact, REGISTRY};
+use repro::pipeline::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
+use repro::report;
 
 /// Differences printed before the rest are only counted.
 const SHOWN: usize = 40;
@@ -14,17 +14,15 @@ const SHOWN: usize = 40;
 /// `repro check`: false when a result differs from its baseline.
 pub fn run(args: &CheckArgs) -> Result<bool> {
     let all = args.targets.is_empty();
-    let names: Vec<&str> = if all {
-        TARGETS.iter().map(|t| t.name).collect()
+    let artefacts: Vec<&dyn Artefact> = if all {
+        REGISTRY.to_vec()
     } else {
-        args.targets.iter().map(String::as_str).collect()
+        args.targets
+            .iter()
+            .map(|n| known(n))
+            .collect::<Result<_, _>>()
+            .map_err(anyhow::Error::msg)?
     };
-    for n in &names {
-        if targets::target(n).is_none() {
-            let known: Vec<&str> = TARGETS.iter().map(|t| t.name).collect();
-            bail!("unknown target '{n}' (known: {})", known.join(", "));
-        }
-    }
     let work = std::env::temp_dir().join(format!("repro-check-{}", std::process::id()));
     let target_args = TargetArgs {
         level: Some(PROFILE_LEVEL),
@@ -40,11 +38,11 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
         ctx.stride = PROFILE_STRIDE;
         let ctx = &*ctx;
         let built = if all {
-            report::build_all(&names, ctx).map_err(anyhow::Error::msg)?
+            report::build_all(&artefacts, ctx).map_err(anyhow::Error::msg)?
         } else {
-            names
+            artefacts
                 .iter()
-                .map(|n| targets::build(n, ctx))
+                .map(|a| paper::build(*a, ctx))
                 .collect::<Result<Vec<_>, _>>()
                 .map_err(anyhow::Error::msg)?
         };
@@ -53,7 +51,7 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
                 eprintln!("  {}", summary_line(b));
             }
         }
-        let files = snapshot::csv_files(&built, all);
+        let files = snapshot::csv_files(built.iter().flat_map(|b| &b.files), all);
         let diffs =
             snapshot::check_files(&args.snapshots, &ctx.out, &files).map_err(anyhow::Error::msg)?;
         for d in diffs.iter().take(SHOWN) {

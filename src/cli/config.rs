@@ -6,11 +6,8 @@ use super::args::{
     ViscosityArg,
 };
 use anyhow::{anyhow, bail, Result};
-use repro::artefacts::cache::Cache;
-use repro::artefacts::run::RunProgress;
-use repro::artefacts::target::{check_writable, Context};
 use repro::physics::case::{
-    Case, CaseError, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem, Spec,
+    Case, CaseError, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
 use repro::physics::datasheet::Datasheet;
 use repro::physics::density::DensityLaw;
@@ -19,6 +16,9 @@ use repro::physics::lubricant::{LubricantError, LubricantTable};
 use repro::physics::pressure_viscosity::BaseOil;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
 use repro::physics::viscosity::ViscosityLaw;
+use repro::pipeline::cache::Cache;
+use repro::pipeline::context::{check_writable, Context};
+use repro::pipeline::executor::RunProgress;
 use repro::solver::grid::Domain;
 use repro::solver::{line, point};
 
@@ -195,7 +195,7 @@ impl SolveArgs {
         let spec = match (dimensionless, physical) {
             (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--temperature/--alpha/--um/--tau0 or a datasheet (physical form) cannot be mixed"),
             (false, false) => bail!("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help"),
-            (true, false) => Spec::Dimensionless(DimensionlessCase {
+            (true, false) => CaseForm::Dimensionless(DimensionlessCase {
                 m: need(self.m, "--m")?,
                 l: need(self.l, "--l")?,
                 s_bar: need(self.s_bar, "--s-bar")?,
@@ -204,7 +204,7 @@ impl SolveArgs {
                 eta0_pa_s: self.eta0,
                 ph_pa: self.ph,
             }),
-            (false, true) => Spec::Physical(PhysicalCase {
+            (false, true) => CaseForm::Physical(PhysicalCase {
                 lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0, &self.datasheet)?,
                 ph_pa: need(self.ph, "--ph")?,
                 um_m_s: need(self.um, "--um")?,
@@ -251,12 +251,12 @@ impl SolveArgs {
         self.reject_point_flags()?;
         let case = self.case()?;
         match &case.spec {
-            Spec::Physical(ph) => {
+            CaseForm::Physical(ph) => {
                 let line = LinePhysicalCase::from_point_case(ph, &LubricantTable::table1())
                     .map_err(flag_error)?;
                 LineProblem::from_physical(&line, case.physics).map_err(flag_error)
             }
-            Spec::Dimensionless(d) => {
+            CaseForm::Dimensionless(d) => {
                 let line = LineDimensionlessCase {
                     m: d.m,
                     l: d.l,

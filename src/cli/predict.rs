@@ -7,51 +7,25 @@
 //! The lubricant is printed first, with where its `alpha` comes from. When that is a
 //! correlation (a datasheet without `--alpha`), every output that depends on `alpha` is
 //! printed with the range it takes over the correlation's band
-//! ([`repro::artefacts::prediction`]), and the refined formula's band holds that range and the
+//! ([`repro::paper::prediction`]), and the refined formula's band holds that range and the
 //! formula's own.
 
 use super::args::PredictArgs;
 use super::config::{check_level, flag_error, lubricant_spec, physics};
 use super::print::{print_failure, rolling_text, solve_progress};
 use super::solve::point_report;
-use super::thermal::{self, ThermalReport};
+use super::thermal;
 use anyhow::{bail, Result};
-use repro::artefacts::base::solve_case;
-use repro::artefacts::fit::FIT_TAU_C_MIN;
-use repro::artefacts::prediction::{Band, Prediction};
-use repro::physics::case::{Case, LubricantSpec, PhysicalCase, Physics, Spec};
+use repro::paper::prediction::contact::EngineeringContact;
+use repro::paper::prediction::heat::{warnings, HeatCorrection};
+use repro::paper::prediction::{Band, Prediction};
+use repro::physics::case::{Case, CaseForm, LubricantSpec, Physics};
 use repro::physics::lubricant::LubricantTable;
-use repro::physics::thermal::ThermalError;
-use repro::physics::traction::{
-    characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
-    ViscosityAtPh, ISOTHERMAL_SLIP_MAX,
-};
+use repro::physics::traction::Load;
+use repro::pipeline::base::solve_case;
 use repro::solver::point::{Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;
-
-/// What the paper says about where Eq. (14) does not hold, for this case: low `tau_c`, and
-/// shear heating beyond [`repro::physics::thermal::ISOTHERMAL_CORRECTION_MAX`] (where the
-/// correction cannot be estimated, the paper's largest slip instead).
-fn warnings(c: &Characteristic, heat: &Option<Result<ThermalReport, ThermalError>>) -> Vec<String> {
-    let mut w = Vec::new();
-    if c.tau_c < FIT_TAU_C_MIN {
-        w.push(format!(
-            "tau_c = {:.3e} is below {FIT_TAU_C_MIN}: at low tau_c the paper finds friction straying from the mastercurve because rolling friction dominates (Sec. III A, Figs. 2-3); Eq. (14) gives the sliding friction only",
-            c.tau_c
-        ));
-    }
-    if let (_, Some(warning)) = thermal::describe(heat) {
-        w.push(warning);
-    }
-    if heat.is_none() && c.slip > ISOTHERMAL_SLIP_MAX {
-        w.push(format!(
-            "S = {} is above {ISOTHERMAL_SLIP_MAX}, the largest slip of the paper's isothermal runs (Table 2, Sec. III B): with significant sliding, shear heating makes Eq. (14) predict too large a friction (Conclusions)",
-            c.slip
-        ));
-    }
-    w
-}
 
 /// `repro predict`: false when the --solve did not converge (after printing why).
 pub fn run(args: &PredictArgs) -> Result<bool> {
@@ -70,21 +44,17 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
         (Some(_), Some(_)) => bail!("--ph and --load cannot be mixed"),
         (None, None) => bail!("--ph: required (or --load)"),
     };
-    let (um, slip, tau0) = (args.um, args.slip, args.tau0);
-    let ry = args.ry.unwrap_or(args.rx);
-    let point = OperatingPoint {
-        contact: Contact::Elliptical {
-            rx_m: args.rx,
-            ry_m: ry,
-        },
-        e_prime_pa: args.e_prime,
+    let tau0 = args.tau0;
+    let contact = EngineeringContact {
+        lubricant,
+        physics,
         load,
-        lubricant: lubricant.clone(),
-        speed: Speed::Mean(um),
-        sliding: Sliding::Slip(slip),
+        rx_m: args.rx,
+        ry_m: args.ry.unwrap_or(args.rx),
+        e_prime_pa: args.e_prime,
+        um_m_s: args.um,
+        slip: args.slip,
         tau0_pa: tau0,
-        viscosity: ViscosityAtPh::Law(physics.viscosity),
-        film: FilmFormula::Eq10,
     };
     let lubs = LubricantTable::table1();
 
@@ -92,20 +62,7 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     // the refined formula (which needs the case's Hertz scales and viscosity law), at the
     // lubricant's alpha and at the ends of its band when it is estimated.
     let start = Instant::now();
-    let ph_pa = characteristic(&point, &lubs).map_err(flag_error)?.ph_pa;
-    let case = Case {
-        spec: Spec::Physical(PhysicalCase {
-            lubricant,
-            ph_pa,
-            um_m_s: um,
-            slip,
-            tau0_pa: tau0,
-            rx_m: args.rx,
-            ry_m: ry,
-            e_prime_pa: args.e_prime,
-        }),
-        physics,
-    };
+    let case = contact.case(&lubs).map_err(flag_error)?;
     let prediction = Prediction::of(&case, &lubs).map_err(flag_error)?;
     let compute_seconds = start.elapsed().as_secs_f64();
     let c = prediction.central.characteristic;
@@ -141,11 +98,11 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
     // The shear-heating correction: of the solve where there is one, else the flat-film
     // estimate; applied to Eq. (14) as a relative correction.
     let heat = match &solved {
-        Some((p, s)) => thermal::of_solution(&case, p, s, &inputs),
-        None => thermal::flat_estimate(&case, &problem, &inputs),
+        Some((p, s)) => HeatCorrection::of_solution(&case, p, s, &inputs),
+        None => HeatCorrection::flat_estimate(&case, &problem, &inputs),
     };
     let mu_bar_thermal = match &heat {
-        Some(Ok(r)) => Some(mu_bar * (1.0 + r.correction())),
+        Some(Ok(h)) => Some(h.corrected(mu_bar)),
         _ => None,
     };
     let warns = warnings(&c, &heat);
@@ -224,7 +181,7 @@ struct LubricantReport {
 /// What the lubricant is, its `eta0` and `alpha`, and where `alpha` comes from: Table 1, the
 /// user, or a correlation (then with its band and source, and said so).
 fn describe_lubricant(case: &Case, lubs: &LubricantTable) -> Result<LubricantReport> {
-    let Spec::Physical(p) = &case.spec else {
+    let CaseForm::Physical(p) = &case.spec else {
         bail!("repro predict takes a physical contact");
     };
     let state = p.lubricant.resolve(lubs).map_err(flag_error)?;

@@ -1,8 +1,8 @@
 //! What the commands print, shared by them: a solve's JSON object, the rolling friction as
 //! text, a failed solve, the per-cycle progress of one solve and a target's summary line.
 
-use repro::artefacts::fit::{mastercurve, PAPER_C};
-use repro::artefacts::target::Built;
+use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use repro::paper::TargetReport;
 use repro::physics::case::Physics;
 use repro::solver::output::{Film, Friction, Info, Progress, SolveError, Step};
 use serde_json::{json, Map, Value};
@@ -44,7 +44,7 @@ impl SolveReport<'_> {
             "mu_bar_rolling": self.friction.rolling,
             "mu_bar_total": self.friction.total(),
             "tau_c": self.tau_c,
-            "mu_bar_eq13": mastercurve(self.tau_c, PAPER_C),
+            "mu_bar_eq13": eq13_mu_bar(self.tau_c, PAPER_C),
             "residual": self.info.residual(),
         }));
         Value::Object(out)
@@ -94,7 +94,7 @@ pub fn solve_progress(quiet: bool) -> impl FnMut(&Progress) {
 }
 
 /// One line per built target: cases, solved, level, time, fit, files.
-pub fn summary_line(b: &Built) -> String {
+pub fn summary_line(b: &TargetReport) -> String {
     let mut line = format!("{}: {} cases", b.name, b.cases);
     if let (Some(s), Some(c)) = (b.solved, b.cached) {
         line.push_str(&format!(", {s} solved, {c} cached"));
@@ -103,11 +103,8 @@ pub fn summary_line(b: &Built) -> String {
         line.push_str(&format!(", level {l}"));
     }
     line.push_str(&format!(", {:.1} s", b.seconds));
-    if let Some(f) = b.fit {
-        line.push_str(&format!(", {}", f.describe()));
-    }
-    if b.name == "fig1" {
-        line.push_str(&format!(" ({})", b.ours));
+    if let Some(h) = &b.headline {
+        line.push_str(&format!(", {h}"));
     }
     line.push_str(&format!(" -> {}", b.files.join(", ")));
     line

@@ -7,8 +7,8 @@ use super::args::TargetArgs;
 use super::config::context;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressStyle};
-use repro::artefacts::run::RunProgress;
-use repro::artefacts::target::Context;
+use repro::pipeline::context::Context;
+use repro::pipeline::executor::RunProgress;
 use std::io::IsTerminal;
 use std::sync::Mutex;
 
@@ -29,7 +29,7 @@ pub fn in_context_writing<T>(
     warnings: bool,
     f: impl FnOnce(&mut Context) -> Result<T>,
 ) -> Result<T> {
-    let shown = Progress::new(args.quiet);
+    let shown = ProgressDisplay::new(args.quiet);
     let progress = |name: &str, p: RunProgress| shown.case_done(name, p);
     let warn = |w: String| {
         if warnings {
@@ -49,12 +49,12 @@ enum Mode {
 }
 
 /// The progress display of one command: the bar of the target being built, if any.
-pub struct Progress {
+pub struct ProgressDisplay {
     mode: Mode,
     bar: Mutex<Option<(String, ProgressBar)>>,
 }
 
-impl Progress {
+impl ProgressDisplay {
     /// Bars when stderr is a terminal, plain lines otherwise, nothing when `quiet`.
     pub fn new(quiet: bool) -> Self {
         let mode = if quiet {
@@ -64,7 +64,7 @@ impl Progress {
         } else {
             Mode::Lines
         };
-        Progress {
+        ProgressDisplay {
             mode,
             bar: Mutex::new(None),
         }
@@ -138,7 +138,7 @@ fn new_bar(name: &str, total: usize) -> ProgressBar {
     bar
 }
 
-impl Drop for Progress {
+impl Drop for ProgressDisplay {
     fn drop(&mut self) {
         if let Some((_, bar)) = self.bar.get_mut().ok().and_then(Option::take) {
             close(&bar);

@@ -5,9 +5,12 @@
 use super::args::TargetArgs;
 use super::progress::in_context_writing;
 use anyhow::{anyhow, bail, Result};
-use repro::artefacts::run::{missing, missing_message, run_jobs, Job, Outcome, RunProgress};
-use repro::artefacts::shard::Shard;
-use repro::artefacts::target::Context;
+use repro::pipeline::context::Context;
+use repro::pipeline::executor::{run_jobs, RunProgress};
+use repro::pipeline::job::Job;
+use repro::pipeline::offline::{check_complete, missing};
+use repro::pipeline::outcome::CaseOutcome;
+use repro::pipeline::shard::Shard;
 use std::time::Instant;
 
 /// The solves of a run, each with the target that needs it.
@@ -78,8 +81,8 @@ pub fn run(
         );
         let label = format!("shard {shard}");
         let progress = |p: RunProgress| (ctx.progress)(&label, p);
-        let done =
-            run_jobs(&label, &jobs, ctx.store(), &progress, ctx.warn).map_err(|e| anyhow!(e))?;
+        let done = run_jobs(&label, &jobs, ctx.cache_policy(), &progress, ctx.warn)
+            .map_err(|e| anyhow!(e))?;
         let (mut solved, mut cached, mut failed) = (0, 0, 0);
         for (job, d) in jobs.iter().zip(&done) {
             let status = match (&d.outcome, d.cached) {
@@ -87,13 +90,13 @@ pub fn run(
                     cached += 1;
                     "cached".to_string()
                 }
-                (Outcome::Solved(_), false) => {
+                (CaseOutcome::Solved(_), false) => {
                     solved += 1;
                     "solved".to_string()
                 }
-                (o @ Outcome::Failed { .. }, false) => {
+                (CaseOutcome::Failed(f), false) => {
                     failed += 1;
-                    format!("failed: {}", o.failure_kind().unwrap_or("failed"))
+                    f.status()
                 }
             };
             let seconds = d
@@ -131,21 +134,5 @@ pub fn check_offline(ctx: &Context, list: &TargetJobs) -> Result<()> {
     let Some(cache) = ctx.cache.as_ref() else {
         bail!("--offline needs the cache; drop --no-cache");
     };
-    let jobs: Vec<Job> = list.iter().map(|(_, j)| j.clone()).collect();
-    let absent: Vec<(String, &Job, Option<String>)> = missing(&jobs, cache)
-        .into_iter()
-        .map(|(j, why)| {
-            let target = list
-                .iter()
-                .find(|(_, lj)| lj.key == j.key)
-                .map(|(t, _)| t.clone())
-                .unwrap_or_default();
-            (target, j, why)
-        })
-        .collect();
-    if absent.is_empty() {
-        Ok(())
-    } else {
-        bail!("{}", missing_message(&absent, cache))
-    }
+    check_complete(cache, list).map_err(|e| anyhow!(e))
 }

@@ -4,14 +4,14 @@
 use super::args::{SlurmArgs, TargetArgs};
 use super::config::context;
 use anyhow::{anyhow, bail, Context as _, Result};
-use repro::artefacts::csv::write_atomic;
-use repro::artefacts::slurm::{sh_quote, SlurmPlan};
-use repro::artefacts::targets::{self, TARGETS};
+use repro::paper::{self, REGISTRY};
+use repro::pipeline::csv::write_atomic;
+use repro::pipeline::slurm::{sh_quote, SlurmPlan};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 
 /// Typical wall time of one solve on one core, s, by level: the development machine's
-/// benchmarks (README, "What accuracy costs"), rounded up. For the estimate printed only.
+/// benchmarks (docs/RESULTS.md, "What accuracy costs"), rounded up. For the estimate printed only.
 fn typical_seconds(level: u32) -> f64 {
     match level {
         0..=5 => 0.5,
@@ -30,7 +30,7 @@ fn absolute(path: &Path) -> Result<PathBuf> {
 /// `repro slurm`.
 pub fn run(args: &SlurmArgs) -> Result<bool> {
     let names: Vec<&str> = if args.targets.iter().any(|t| t == "all") {
-        TARGETS.iter().map(|t| t.name).collect()
+        REGISTRY.iter().map(|a| a.name()).collect()
     } else {
         args.targets.iter().map(String::as_str).collect()
     };
@@ -56,7 +56,10 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
     // Shards take whole families (the cases that start from one base).
     let mut families = BTreeSet::new();
     for n in &names {
-        for j in targets::jobs(n, &ctx).map_err(|e| anyhow!("{e}"))? {
+        for j in paper::known(n)
+            .and_then(|a| a.jobs(&ctx))
+            .map_err(|e| anyhow!("{e}"))?
+        {
             families.insert(j.family().to_string());
             keys.insert(j.key);
         }

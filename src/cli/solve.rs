@@ -6,15 +6,17 @@ use super::config::flag_error;
 use super::print::{print_failure, rolling_text, solve_progress, SolveReport};
 use super::thermal;
 use anyhow::{Context as _, Result};
-use repro::artefacts::base::solve_case;
-use repro::artefacts::csv::{num, table, write_atomic};
-use repro::artefacts::run::describe;
+use repro::paper::prediction::heat::HeatCorrection;
 use repro::physics::case::{Case, Problem};
 use repro::physics::line_contact::{LineFilmFormula, LineProblem};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::ShearLaw;
+use repro::pipeline::base::solve_case;
+use repro::pipeline::csv::{rows, write_atomic};
+use repro::pipeline::label::case_label;
 use repro::solver::line::{self, LineSolution};
 use repro::solver::point::{self, PointSolution};
+use serde::Serialize;
 use serde_json::json;
 use std::path::Path;
 
@@ -34,7 +36,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
         let quiet = args.quiet || args.json;
         let mut said = |b: &Case| {
             if !quiet {
-                eprintln!("solving its base first: {}", describe(b, params.level));
+                eprintln!("solving its base first: {}", case_label(b, params.level));
             }
         };
         solve_case(
@@ -55,15 +57,20 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     };
     if let Some(path) = &args.fields {
         let (g, p, h) = (&s.grid, &s.p, &s.h);
-        let rows = (0..g.py()).flat_map(|j| {
+        let nodes = (0..g.py()).flat_map(|j| {
             (0..g.px()).map(move |i| {
                 let k = g.idx(i, j);
-                [g.x(i), g.y(j), p[k], h[k]]
+                PointNode {
+                    x: g.x(i),
+                    y: g.y(j),
+                    p: p[k],
+                    h: h[k],
+                }
             })
         });
-        write_fields(path, &["X", "Y", "P", "H"], rows)?;
+        write_fields(path, &rows(nodes))?;
     }
-    let heat = thermal::of_solution(&case, &problem, &s, &inputs);
+    let heat = HeatCorrection::of_solution(&case, &problem, &s, &inputs);
     let (line, warning) = thermal::describe(&heat);
     if args.json {
         let mut v = point_report(&problem, &s).json();
@@ -94,14 +101,28 @@ pub fn point_report<'a>(problem: &Problem, s: &'a PointSolution) -> SolveReport<
     }
 }
 
-/// The pressure and film fields (`--fields`), one row per node.
-fn write_fields<const N: usize>(
-    path: &Path,
-    header: &[&str; N],
-    rows: impl Iterator<Item = [f64; N]>,
-) -> Result<()> {
-    let text = table(header, rows.map(|r| r.map(num).to_vec()));
-    write_atomic(path, &text).with_context(|| format!("--fields: cannot write {}", path.display()))
+/// A node of the point contact's fields (`--fields`).
+#[derive(Default, Serialize)]
+#[serde(rename_all = "UPPERCASE")]
+struct PointNode {
+    x: f64,
+    y: f64,
+    p: f64,
+    h: f64,
+}
+
+/// A node of the line contact's fields (`--fields`).
+#[derive(Default, Serialize)]
+#[serde(rename_all = "UPPERCASE")]
+struct LineNode {
+    x: f64,
+    p: f64,
+    h: f64,
+}
+
+/// Writes the pressure and film fields (`--fields`), one row per node.
+fn write_fields(path: &Path, text: &str) -> Result<()> {
+    write_atomic(path, text).with_context(|| format!("--fields: cannot write {}", path.display()))
 }
 
 /// The limiting shear stress's line of a summary (empty without one): the dimensionless
@@ -197,12 +218,12 @@ fn run_line(args: &SolveArgs) -> Result<bool> {
         }
     };
     if let Some(path) = &args.fields {
-        let rows =
-            s.x.iter()
-                .zip(&s.p)
-                .zip(&s.h)
-                .map(|((x, p), h)| [*x, *p, *h]);
-        write_fields(path, &["X", "P", "H"], rows)?;
+        let nodes = s.x.iter().zip(&s.p).zip(&s.h).map(|((x, p), h)| LineNode {
+            x: *x,
+            p: *p,
+            h: *h,
+        });
+        write_fields(path, &rows(nodes))?;
     }
     if args.json {
         println!(

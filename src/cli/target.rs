@@ -7,21 +7,17 @@ use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
 use super::shard::{self, TargetJobs};
 use anyhow::{anyhow, Context as _, Result};
-use repro::artefacts::csv::write_atomic;
-use repro::artefacts::sweep::Sweep;
-use repro::artefacts::table4;
-use repro::artefacts::target::Context;
-use repro::artefacts::{report, targets};
+use repro::paper::table4;
+use repro::paper::{self, Artefact, REGISTRY};
+use repro::pipeline::context::Context;
+use repro::pipeline::csv::write_atomic;
+use repro::pipeline::sweep::Sweep;
+use repro::report;
 use std::time::Instant;
 
 /// Every solve of the targets `names` in the context, with its target.
 fn target_jobs(names: &[&str], ctx: &Context) -> Result<TargetJobs> {
-    let mut out = Vec::new();
-    for n in names {
-        let jobs = targets::jobs(n, ctx).map_err(anyhow::Error::msg)?;
-        out.extend(jobs.into_iter().map(|j| (n.to_string(), j)));
-    }
-    Ok(out)
+    paper::jobs_of(names, ctx).map_err(anyhow::Error::msg)
 }
 
 /// Before an offline build: every case of `names` must be in the cache.
@@ -34,29 +30,26 @@ fn check_offline(names: &[&str], ctx: &Context) -> Result<()> {
 
 /// `repro list`: one line per target.
 pub fn list() -> Result<bool> {
-    let width = targets::TARGETS
-        .iter()
-        .map(|t| t.name.len())
-        .max()
-        .unwrap_or(0);
-    for t in targets::TARGETS {
-        let level = t
-            .default_level
+    let width = REGISTRY.iter().map(|a| a.name().len()).max().unwrap_or(0);
+    for a in REGISTRY {
+        let level = a
+            .default_level()
             .map(|l| format!("[level {l}]"))
             .unwrap_or_default();
-        println!("{:<width$} {:<10} {}", t.name, level, t.description);
+        println!("{:<width$} {:<10} {}", a.name(), level, a.describe());
     }
     Ok(true)
 }
 
 /// `repro <target>`.
-pub fn one(name: &str, args: &TargetArgs) -> Result<bool> {
+pub fn one(artefact: &dyn Artefact, args: &TargetArgs) -> Result<bool> {
+    let name = artefact.name();
     if let Some(s) = shard::detect(args)? {
         return shard::run(args, s, |ctx| target_jobs(&[name], ctx));
     }
     let built = in_context(args, true, |ctx| {
         check_offline(&[name], ctx)?;
-        targets::build(name, ctx).map_err(anyhow::Error::msg)
+        paper::build(artefact, ctx).map_err(anyhow::Error::msg)
     })?;
     println!("{}", summary_line(&built));
     Ok(true)
@@ -64,13 +57,13 @@ pub fn one(name: &str, args: &TargetArgs) -> Result<bool> {
 
 /// `repro all`: every target, then `summary.csv` and `index.html`.
 pub fn all(args: &TargetArgs) -> Result<bool> {
-    let names: Vec<&str> = targets::TARGETS.iter().map(|t| t.name).collect();
+    let names: Vec<&str> = REGISTRY.iter().map(|a| a.name()).collect();
     if let Some(s) = shard::detect(args)? {
         return shard::run(args, s, |ctx| target_jobs(&names, ctx));
     }
     let built = in_context(args, true, |ctx| {
         check_offline(&names, ctx)?;
-        report::build_all(&names, ctx).map_err(anyhow::Error::msg)
+        report::build_all(REGISTRY, ctx).map_err(anyhow::Error::msg)
     })?;
     for b in &built {
         println!("{}", summary_line(b));
@@ -88,7 +81,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "study".into());
     let study_jobs = |ctx: &Context| -> Result<TargetJobs> {
-        let jobs = targets::figure::study_jobs(&sweep, None, ctx)
+        let jobs = paper::figures::study_jobs(&sweep, None, ctx)
             .map_err(|e| anyhow!("{}: {e}", args.file.display()))?;
         Ok(jobs.into_iter().map(|j| (stem.clone(), j)).collect())
     };
@@ -100,7 +93,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         if ctx.offline {
             shard::check_offline(ctx, &study_jobs(ctx)?)?;
         }
-        targets::figure::study(&stem, &sweep, ctx)
+        paper::figures::study(&stem, &sweep, ctx)
             .map_err(|e| anyhow!("{}: {e}", args.file.display()))
     })?;
     built.seconds = t.elapsed().as_secs_f64();
@@ -126,5 +119,5 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
         .with_context(|| format!("--out: cannot write {}", path.display()))?;
     print!("{}", table4::to_text(&rows));
     println!("wrote {}", path.display());
-    Ok(rows.iter().all(|r| r.outcome.record().is_some()))
+    Ok(rows.iter().all(|r| r.outcome.solved().is_some()))
 }

@@ -178,7 +178,7 @@ pub struct DimensionlessCase {
 /// How a case is specified.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "kebab-case")]
-pub enum Spec {
+pub enum CaseForm {
     /// Physical operating conditions.
     Physical(PhysicalCase),
     /// Moes groups.
@@ -189,7 +189,7 @@ pub enum Spec {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Case {
     /// Operating conditions.
-    pub spec: Spec,
+    pub spec: CaseForm,
     /// Physics.
     pub physics: Physics,
 }
@@ -407,8 +407,8 @@ impl Problem {
     /// Resolves a case against the lubricant table and checks every field.
     pub fn from_case(case: &Case, lubricants: &LubricantTable) -> Result<Self, CaseError> {
         match &case.spec {
-            Spec::Physical(p) => Self::from_physical(p, case.physics, lubricants),
-            Spec::Dimensionless(d) => Self::from_dimensionless(d, case.physics),
+            CaseForm::Physical(p) => Self::from_physical(p, case.physics, lubricants),
+            CaseForm::Dimensionless(d) => Self::from_dimensionless(d, case.physics),
         }
     }
 
@@ -537,8 +537,10 @@ pub(crate) mod tests {
     /// The worked case's operating conditions.
     pub(crate) fn worked_physical() -> PhysicalCase {
         match worked_case().spec {
-            Spec::Physical(p) => p,
-            Spec::Dimensionless(_) => panic!("cases/table4.toml: the Appendix case is physical"),
+            CaseForm::Physical(p) => p,
+            CaseForm::Dimensionless(_) => {
+                panic!("cases/table4.toml: the Appendix case is physical")
+            }
         }
     }
 
@@ -562,7 +564,7 @@ pub(crate) mod tests {
     #[test]
     fn a_pressure_given_in_gpa_instead_of_pa_is_refused_by_name() {
         let mut case = worked_case();
-        if let Spec::Physical(p) = &mut case.spec {
+        if let CaseForm::Physical(p) = &mut case.spec {
             p.ph_pa = 3.0;
         }
         let e = Problem::from_case(&case, &LubricantTable::table1()).unwrap_err();
@@ -580,7 +582,7 @@ pub(crate) mod tests {
         let phys = Problem::from_case(&worked_case(), &lubs).unwrap();
         let g = phys.groups;
         let dimless = Case {
-            spec: Spec::Dimensionless(DimensionlessCase {
+            spec: CaseForm::Dimensionless(DimensionlessCase {
                 m: g.m,
                 l: g.l,
                 s_bar: g.s_bar,
@@ -639,7 +641,7 @@ pub(crate) mod tests {
             "{\"spec\":{\"physical\":{\"lubricant\":\"mineral-oil-a\",\"temperature_c\":40.0,\"ph_pa\":3000000000.0,\"um_m_s\":12.0,\"slip\":0.005,\"tau0_pa\":4000000.0,\"rx_m\":0.0103875,\"ry_m\":0.0103875,\"e_prime_pa\":226000000000.0}},\"physics\":{\"viscosity\":\"roelands\",\"density\":\"dowson-higginson\",\"rheology\":\"eyring\"}}"
         );
         let mut given = worked_case();
-        if let Spec::Physical(p) = &mut given.spec {
+        if let CaseForm::Physical(p) = &mut given.spec {
             p.lubricant = LubricantSpec::Given {
                 alpha_per_pa: 21.6e-9,
                 eta0_pa_s: 8.24e-3,
@@ -674,7 +676,7 @@ pub(crate) mod tests {
     #[test]
     fn a_datasheet_case_reads_back_as_a_datasheet_and_resolves_to_nu_rho() {
         let mut case = worked_case();
-        if let Spec::Physical(p) = &mut case.spec {
+        if let CaseForm::Physical(p) = &mut case.spec {
             p.lubricant = gear_oil(None);
         }
         // JSON (the cache key) and TOML (a case file) both round-trip to the variant.
@@ -756,7 +758,7 @@ pub(crate) mod tests {
     fn bad_fields_are_named() {
         let lubs = LubricantTable::table1();
         let mut c = worked_case();
-        if let Spec::Physical(p) = &mut c.spec {
+        if let CaseForm::Physical(p) = &mut c.spec {
             p.slip = 2.5;
         }
         assert!(Problem::from_case(&c, &lubs)
@@ -764,7 +766,7 @@ pub(crate) mod tests {
             .to_string()
             .starts_with("slip:"));
         let mut c = worked_case();
-        if let Spec::Physical(p) = &mut c.spec {
+        if let CaseForm::Physical(p) = &mut c.spec {
             p.ph_pa = -1.0;
         }
         assert!(Problem::from_case(&c, &lubs)
@@ -772,7 +774,7 @@ pub(crate) mod tests {
             .to_string()
             .starts_with("ph:"));
         let mut c = worked_case();
-        if let Spec::Physical(p) = &mut c.spec {
+        if let CaseForm::Physical(p) = &mut c.spec {
             p.ry_m = p.rx_m / 2.0;
         }
         assert!(Problem::from_case(&c, &lubs)

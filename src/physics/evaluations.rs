@@ -73,7 +73,7 @@ pub(crate) fn take() -> Counts {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::physics::case::{Case, DimensionlessCase, Physics, Problem, Spec};
+    use crate::physics::case::{Case, CaseForm, DimensionlessCase, Physics, Problem};
     use crate::physics::density::DensityLaw;
     use crate::physics::lubricant::LubricantTable;
     use crate::physics::rheology::{LimitingShearStress, Rheology};
@@ -85,7 +85,7 @@ mod tests {
     /// the cases differ only in their physics).
     fn case(physics: Physics) -> Problem {
         let case = Case {
-            spec: Spec::Dimensionless(DimensionlessCase {
+            spec: CaseForm::Dimensionless(DimensionlessCase {
                 m: 100.0,
                 l: 10.0,
                 s_bar: 0.1,

@@ -1,7 +1,7 @@
 //! The flat-film friction estimate: the Eyring mean shear stress of a parallel film under the
 //! dry Hertzian pressure, averaged over the load. An oracle for the solvers' friction that
 //! shares nothing with them but the viscosity law, and the base of the refined friction
-//! formula (`artefacts::refined`).
+//! formula (`paper::mastercurve::refined`).
 //!
 //! With the film `H` taken equal everywhere to its central value, the Couette argument of
 //! Eq. (4) at pressure `P` is `x(P) = x_c eta_bar(P) / eta_bar(1)`, `x_c = N S eta_bar(1) / H`

@@ -14,7 +14,7 @@
 //! The Hertz scales, Moes groups and viscosity laws are those of [`super::case`],
 //! [`super::line_contact`] and [`super::viscosity`]: nothing is recomputed here.
 
-use super::case::{CaseError, LubricantSpec, PhysicalCase, Physics, Problem, Spec};
+use super::case::{CaseError, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use super::density::DensityLaw;
 use super::film::hc_eq10;
 use super::hertz::Hertz;
@@ -211,7 +211,7 @@ fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
 }
 
 /// What the film formula needs from either geometry: groups and the film unit.
-struct Resolved {
+struct ContactGroups {
     ph: f64,
     m: f64,
     l: f64,
@@ -227,7 +227,7 @@ fn resolve(
     point: &OperatingPoint,
     slip: f64,
     lubs: &LubricantTable,
-) -> Result<Resolved, CaseError> {
+) -> Result<ContactGroups, CaseError> {
     let e_prime = positive("e-prime", point.e_prime_pa)?;
     let um = positive("um", point.speed.mean())?;
     let law = match point.viscosity {
@@ -260,7 +260,7 @@ fn resolve(
                 }
             };
             let case = crate::physics::case::Case {
-                spec: Spec::Physical(PhysicalCase {
+                spec: CaseForm::Physical(PhysicalCase {
                     lubricant: point.lubricant.clone(),
                     ph_pa: ph,
                     um_m_s: um,
@@ -274,7 +274,7 @@ fn resolve(
             };
             let p = Problem::from_case(&case, lubs)?;
             let g = &p.groups;
-            Ok(Resolved {
+            Ok(ContactGroups {
                 ph,
                 m: g.m,
                 l: g.l,
@@ -311,7 +311,7 @@ fn resolve(
                 physics,
             )?;
             let g = &p.groups;
-            Ok(Resolved {
+            Ok(ContactGroups {
                 ph,
                 m: g.m,
                 l: g.l,
@@ -331,7 +331,7 @@ pub fn characteristic(
     point: &OperatingPoint,
     lubs: &LubricantTable,
 ) -> Result<Characteristic, CaseError> {
-    let hc_of = |r: &Resolved| {
+    let hc_of = |r: &ContactGroups| {
         match (point.film, point.contact) {
         (FilmFormula::Eq10, Contact::Elliptical { .. }) => Ok(hc_eq10(r.m, r.l)),
         (FilmFormula::Line(f), Contact::Line { .. }) => Ok(f.hc(r.m, r.l)),

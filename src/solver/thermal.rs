@@ -242,7 +242,7 @@ mod tests {
         let mut physical = worked_physical();
         physical.ph_pa = 1e9;
         physical.slip = 0.02;
-        case.spec = crate::physics::case::Spec::Physical(physical.clone());
+        case.spec = crate::physics::case::CaseForm::Physical(physical.clone());
         let problem = Problem::from_case(&case, &lubs).unwrap();
         let s = solve(&problem, &Params::at_level(5), None).unwrap();
         let contact = ThermalContact::of_point(&physical, &problem, &lubs).unwrap();

@@ -321,7 +321,7 @@ const LAG_ITERATIONS: usize = 20;
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::physics::case::{Case, DimensionlessCase, Physics, Problem, Spec};
+    use crate::physics::case::{Case, CaseForm, DimensionlessCase, Physics, Problem};
     use crate::physics::hertz::Hertz;
     use crate::physics::lubricant::LubricantTable;
     use crate::solver::dense;
@@ -331,7 +331,7 @@ mod tests {
     /// `Delta` that keeps the film positive.
     fn setup() -> (Level, Model, f64) {
         let case = Case {
-            spec: Spec::Dimensionless(DimensionlessCase {
+            spec: CaseForm::Dimensionless(DimensionlessCase {
                 m: 100.0,
                 l: 10.0,
                 s_bar: 0.5,

@@ -1,0 +1,251 @@
+//! The representative cases of the level study: each a problem with the parameter rule its
+//! targets use, solved alone at any level.
+
+use crate::paper::cases::shipped_sweep;
+use crate::paper::figures::line::table3_line_cases;
+use crate::paper::table4::Table4Case;
+use crate::physics::case::{CaseForm, LubricantSpec, Physics, Problem};
+use crate::physics::density::DensityLaw;
+use crate::physics::line_contact::LineProblem;
+use crate::physics::lubricant::LubricantTable;
+use crate::physics::rheology::Rheology;
+use crate::physics::viscosity::ViscosityLaw;
+use crate::pipeline::sweep::PointSpec;
+use crate::solver::line;
+use crate::solver::output::SolveError;
+use crate::solver::point;
+
+/// A contact and how the pipeline solves it at a level.
+#[derive(Debug, Clone)]
+pub enum AccuracyProblem {
+    /// An elliptical contact, solved by [`point::solve`] with `params(problem, level)`.
+    Point {
+        /// The problem.
+        problem: Box<Problem>,
+        /// Solver parameters of the problem at a level (the ones its targets use).
+        params: fn(&Problem, u32) -> point::Params,
+    },
+    /// A line contact, solved by [`line::solve`] with `params(problem, level)`.
+    Line {
+        /// The problem.
+        problem: Box<LineProblem>,
+        /// Solver parameters of the problem at a level.
+        params: fn(&LineProblem, u32) -> line::Params,
+    },
+}
+
+/// What one solve at one level gave.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelOutputs {
+    /// Central film in the solver's unit (`H = h/c` for the point contact).
+    pub h_central: f64,
+    /// Sliding reduced friction.
+    pub mu_bar: f64,
+    /// Finest-level cycles.
+    pub cycles: usize,
+}
+
+impl AccuracyProblem {
+    /// Solves at `level`.
+    pub fn solve(&self, level: u32) -> Result<LevelOutputs, SolveError> {
+        match self {
+            AccuracyProblem::Point { problem, params } => {
+                point::solve(problem, &params(problem, level), None).map(|s| LevelOutputs {
+                    h_central: s.film.h_central,
+                    mu_bar: s.friction.sliding,
+                    cycles: s.info.cycles,
+                })
+            }
+            AccuracyProblem::Line { problem, params } => {
+                line::solve(problem, &params(problem, level), None).map(|s| LevelOutputs {
+                    h_central: s.film.h_central,
+                    mu_bar: s.friction.sliding,
+                    cycles: s.info.cycles,
+                })
+            }
+        }
+    }
+
+    /// The domain check of a point contact: solved at `level` with its parameters' domain's
+    /// inlet and sides doubled ([`crate::solver::grid::Domain::doubled`]), on the mesh of
+    /// `level - 1` on its own domain; `None` for a line contact.
+    pub fn solve_doubled(&self, level: u32) -> Option<Result<LevelOutputs, SolveError>> {
+        match self {
+            AccuracyProblem::Point { problem, params } => {
+                let rule = params(problem, level);
+                let doubled = point::Params {
+                    domain: rule.domain.doubled(),
+                    ..rule
+                };
+                Some(point::solve(problem, &doubled, None).map(|s| LevelOutputs {
+                    h_central: s.film.h_central,
+                    mu_bar: s.friction.sliding,
+                    cycles: s.info.cycles,
+                }))
+            }
+            AccuracyProblem::Line { .. } => None,
+        }
+    }
+
+    /// "point" or "line".
+    pub fn kind(&self) -> &'static str {
+        match self {
+            AccuracyProblem::Point { .. } => "point",
+            AccuracyProblem::Line { .. } => "line",
+        }
+    }
+
+    /// Grid points of `level` (`(2^(level+1) + 1)^2` nodes in 2-D, `2^(level+1) + 1` in 1-D),
+    /// as written in the CSV.
+    pub fn points(&self, level: u32) -> String {
+        let n = 1u64 << (level + 1);
+        match self {
+            AccuracyProblem::Point { .. } => format!("{n}x{n}"),
+            AccuracyProblem::Line { .. } => format!("{n}"),
+        }
+    }
+}
+
+/// A case of the study.
+#[derive(Debug, Clone)]
+pub struct AccuracyCase {
+    /// Short name (CSV and legend).
+    pub name: &'static str,
+    /// What it is.
+    pub description: &'static str,
+    /// The targets it stands for when the level of each is recommended.
+    pub targets: &'static [&'static str],
+    /// Added to the study's levels: a 1-D level costs so little that the line contact is
+    /// studied on finer grids (its level `n + offset` stands beside the point level `n`).
+    pub level_offset: u32,
+    /// The contact.
+    pub contact: AccuracyProblem,
+}
+
+/// The parameters the figure targets use (the rule, [`point::Params::for_problem`]),
+/// without the film's refinement: a point of the study is a solve on its own level (a
+/// figure's closed film is re-solved one level finer; here the level fails, and its point is
+/// left out, rather than a finer level's time and error being shown under its name).
+pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
+    point::Params {
+        film_refinement_levels: 0,
+        ..point::Params::for_problem(problem, level)
+    }
+}
+
+/// The representative cases, cheapest first:
+///
+/// - `light-barus`: the lightest load of the Figs. 1-3 sweep (M 50, L 10, S-bar 0.1,
+///   Barus, incompressible, Eyring; `cases/fig1-3.toml`), for fig1-fig3;
+/// - `heavy-barus`: the heaviest corner of the same sweep (M 1000, L 15, alpha-bar about 55),
+///   so that the most demanding case of fig1-fig3 decides their level;
+/// - `table4`: the Appendix case (mineral oil A, 3 GPa, Roelands, Dowson-Higginson), the
+///   heaviest physics of Figs. 4-6, for fig4-fig6. Solved with the figures' parameters, not
+///   Table 4's: a level whose minimum film is not positive fails, as it does in a figure
+///   (Table 4 itself reports its level-5 row anyway);
+/// - `ellipse-1/5`: Rx/Ry = 1/5 at 3 GPa, 60 C (Table 3, `cases/fig7.toml`), for fig7;
+/// - `line` (with `with_line`): the line contact of Table 3 at 3 GPa, 40 C, for fig7, two
+///   levels finer than the point contacts (the dense Newton solve of the 1-D solver is
+///   O(n^3): level 10 takes about 1.5 s, level 11 7 s).
+pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
+    let lubs = LubricantTable::table1();
+    let light = PointSpec {
+        m: Some(50.0),
+        l: Some(10.0),
+        s_bar: Some(0.1),
+        tau0_hat: Some(2.0),
+        ..PointSpec::default()
+    }
+    .to_case(
+        "accuracy",
+        Physics {
+            viscosity: ViscosityLaw::Barus,
+            density: DensityLaw::Incompressible,
+            rheology: Rheology::Eyring,
+        },
+    )
+    .map_err(|e| e.to_string())?;
+    let heavy = PointSpec {
+        m: Some(1000.0),
+        l: Some(15.0),
+        s_bar: Some(0.1),
+        tau0_hat: Some(2.0),
+        ..PointSpec::default()
+    }
+    .to_case("accuracy", light.physics)
+    .map_err(|e| e.to_string())?;
+    let table4 = Table4Case::shipped()?.case;
+    let fig7 = shipped_sweep("fig7").map_err(|e| e.to_string())?;
+    let ellipse = fig7
+        .cases
+        .iter()
+        .find(|c| match &c.spec {
+            CaseForm::Physical(p) => {
+                (p.rx_m / p.ry_m - 0.2).abs() < 1e-9
+                    && (p.ph_pa - 3e9).abs() < 1.0
+                    && matches!(&p.lubricant, LubricantSpec::Named { temperature_c, .. } if (*temperature_c - 60.0).abs() < 1e-9)
+            }
+            CaseForm::Dimensionless(_) => false,
+        })
+        .cloned()
+        .ok_or("cases/fig7.toml: no Rx/Ry = 1/5 case at 3 GPa, 60 C")?;
+    let point = |case: &crate::physics::case::Case,
+                 params: fn(&Problem, u32) -> point::Params|
+     -> Result<AccuracyProblem, String> {
+        Ok(AccuracyProblem::Point {
+            problem: Box::new(Problem::from_case(case, &lubs).map_err(|e| e.to_string())?),
+            params,
+        })
+    };
+    let mut cases = vec![
+        AccuracyCase {
+            name: "light-barus",
+            description: "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)",
+            targets: &["fig1", "fig2", "fig3"],
+            level_offset: 0,
+            contact: point(&light, pipeline_params)?,
+        },
+        AccuracyCase {
+            name: "heavy-barus",
+            description: "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)",
+            targets: &["fig1", "fig2", "fig3"],
+            level_offset: 0,
+            contact: point(&heavy, pipeline_params)?,
+        },
+        AccuracyCase {
+            name: "table4",
+            description: "Appendix case: mineral oil A, 3 GPa, 40 C, Roelands, Dowson-Higginson, Eyring",
+            targets: &["fig4", "fig5", "fig6"],
+            level_offset: 0,
+            contact: point(&table4, pipeline_params)?,
+        },
+        AccuracyCase {
+            name: "ellipse-1/5",
+            description: "Rx/Ry = 1/5, mineral oil A, 3 GPa, 60 C, 12 m/s, S 0.1 %, tau0 4 MPa (Table 3)",
+            targets: &["fig7"],
+            level_offset: 0,
+            contact: point(&ellipse, pipeline_params)?,
+        },
+    ];
+    if with_line {
+        // The heaviest line contact of Table 3 (3 GPa), from cases/fig7.toml.
+        let (lines, physics) = table3_line_cases()?;
+        let heaviest = lines
+            .into_iter()
+            .max_by(|a, b| a.ph_pa.total_cmp(&b.ph_pa))
+            .ok_or("cases/fig7.toml: no Table 3 case")?;
+        let problem = LineProblem::from_physical(&heaviest, physics).map_err(|e| e.to_string())?;
+        cases.push(AccuracyCase {
+            name: "line",
+            description:
+                "line contact, mineral oil A, 3 GPa, 40 C, 7 m/s, S 0.1 %, tau0 8 MPa (Table 3)",
+            targets: &["fig7"],
+            level_offset: 2,
+            contact: AccuracyProblem::Line {
+                problem: Box::new(problem),
+                params: line::Params::for_problem,
+            },
+        });
+    }
+    Ok(cases)
+}

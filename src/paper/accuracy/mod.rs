@@ -1,0 +1,395 @@
+//! What accuracy costs in time: representative cases solved level by level, each level's
+//! central film and sliding `mu-bar` compared with a Richardson extrapolation of the two
+//! finest levels, against the wall time of its solve (`repro accuracy`).
+//!
+//! A case of the study is an [`AccuracyCase`] (`cases.rs`): a name, the targets it stands
+//! for, and an [`AccuracyProblem`] that knows how to solve itself at a level. Adding a case
+//! is adding one entry to [`cases::accuracy_cases`]; the rest (errors here, the files in
+//! `files.rs`, the picture in `picture.rs`, the recommended level per target) is shared.
+//!
+//! The error estimate. The discretisation is second order, so with `X_n` the value at level
+//! `n` and `f` the finest converged level, `X_R = X_f + (X_f - X_{f-1}) / 3` removes the
+//! leading `h^2` term; each level's error is `|X_n / X_R - 1|`. The order observed over the
+//! three finest levels, `log2 |X_{f-2} - X_{f-1}| / |X_{f-1} - X_f|`, is reported beside it as a
+//! check of that assumption. Where fewer than two consecutive finest levels converged, the
+//! finest level is the reference (and its own error is zero, which says nothing): the CSV names
+//! the reference used.
+//!
+//! Timing: each solve runs alone, one after the other, on the calling thread (the point solver
+//! is single-threaded), and with `repeats > 1` the median wall time is kept.
+
+pub mod cases;
+pub mod files;
+pub mod picture;
+
+use crate::solver::output::SolveError;
+pub use cases::{AccuracyCase, AccuracyProblem, LevelOutputs};
+use std::time::Instant;
+
+/// Error of `mu-bar` under which a level is taken as good enough for a target.
+pub const MU_TOLERANCE: f64 = 0.01;
+
+/// One level of one case.
+#[derive(Debug, Clone)]
+pub struct LevelRun {
+    /// Grid level.
+    pub level: u32,
+    /// The solve, or why it failed.
+    pub outcome: Result<LevelOutputs, SolveError>,
+    /// Wall time, s (median over the repeats).
+    pub seconds: f64,
+}
+
+/// The reference a case's errors are measured against.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Reference {
+    /// Central film.
+    pub h_central: f64,
+    /// Sliding `mu-bar`.
+    pub mu_bar: f64,
+    /// "richardson" (second order, two finest levels) or "finest".
+    pub kind: &'static str,
+    /// Order observed over the three finest levels, film and friction (when three
+    /// consecutive finest levels converged and the differences are not zero).
+    pub order: Option<(f64, f64)>,
+}
+
+/// A case and its levels.
+#[derive(Debug, Clone)]
+pub struct AccuracyResult {
+    /// Name.
+    pub name: &'static str,
+    /// Description.
+    pub description: &'static str,
+    /// "point" or "line".
+    pub kind: &'static str,
+    /// The targets it stands for.
+    pub targets: &'static [&'static str],
+    /// Its level offset (see [`AccuracyCase::level_offset`]).
+    pub level_offset: u32,
+    /// Levels, coarse to fine.
+    pub levels: Vec<LevelRun>,
+    /// The reference of the errors (`None` when nothing converged).
+    pub reference: Option<Reference>,
+    /// The domain check of a point contact ([`DomainCheck`]).
+    pub domain: Option<DomainCheck>,
+    /// Points per level (for the CSV).
+    points: Vec<String>,
+}
+
+/// How much the domain moves a point contact's outputs: the case solved on its domain at
+/// the second-finest level of the study against its inlet and sides doubled at the finest
+/// (the same mesh).
+#[derive(Debug, Clone)]
+pub struct DomainCheck {
+    /// The doubled domain's level.
+    pub level: u32,
+    /// The relative change of the central film and of sliding `mu-bar`, or why the doubled
+    /// domain's solve failed.
+    pub change: Result<(f64, f64), SolveError>,
+}
+
+impl DomainCheck {
+    /// The check of `case` whose runs are `runs`: `None` for a line contact, or when the
+    /// study has no two consecutive finest levels or the coarser one failed.
+    fn of(case: &AccuracyCase, runs: &[LevelRun]) -> Option<DomainCheck> {
+        let [.., coarse, fine] = runs else {
+            return None;
+        };
+        let own = coarse.outcome.as_ref().ok()?;
+        if fine.level != coarse.level + 1 {
+            return None;
+        }
+        let doubled = case.contact.solve_doubled(fine.level)?;
+        Some(DomainCheck {
+            level: fine.level,
+            change: doubled.map(|d| {
+                (
+                    (d.h_central / own.h_central - 1.0).abs(),
+                    (d.mu_bar / own.mu_bar - 1.0).abs(),
+                )
+            }),
+        })
+    }
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n == 0 {
+        f64::NAN
+    } else if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+/// Observed order `log2(|a - b| / |b - c|)` of three consecutive levels.
+fn observed_order(a: f64, b: f64, c: f64) -> Option<f64> {
+    let r = (a - b).abs() / (b - c).abs();
+    (r.is_finite() && r > 0.0).then(|| r.log2())
+}
+
+/// The reference of a case from its converged levels.
+pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
+    let ok: Vec<(u32, LevelOutputs)> = levels
+        .iter()
+        .filter_map(|r| r.outcome.as_ref().ok().map(|m| (r.level, *m)))
+        .collect();
+    let (&(lf, f), rest) = ok.split_last()?;
+    let prev = rest.last().filter(|(l, _)| *l + 1 == lf).map(|p| p.1);
+    let Some(c) = prev else {
+        return Some(Reference {
+            h_central: f.h_central,
+            mu_bar: f.mu_bar,
+            kind: "finest",
+            order: None,
+        });
+    };
+    let order = (rest.len() >= 2 && rest[rest.len() - 2].0 + 2 == lf)
+        .then(|| rest[rest.len() - 2].1)
+        .and_then(|a| {
+            Some((
+                observed_order(a.h_central, c.h_central, f.h_central)?,
+                observed_order(a.mu_bar, c.mu_bar, f.mu_bar)?,
+            ))
+        });
+    Some(Reference {
+        h_central: f.h_central + (f.h_central - c.h_central) / 3.0,
+        mu_bar: f.mu_bar + (f.mu_bar - c.mu_bar) / 3.0,
+        kind: "richardson",
+        order,
+    })
+}
+
+impl AccuracyResult {
+    /// Relative errors `(film, mu-bar)` of a level against the reference.
+    pub fn errors(&self, run: &LevelRun) -> Option<(f64, f64)> {
+        let r = self.reference?;
+        let m = run.outcome.as_ref().ok()?;
+        Some((
+            (m.h_central / r.h_central - 1.0).abs(),
+            (m.mu_bar / r.mu_bar - 1.0).abs(),
+        ))
+    }
+
+    /// The cheapest level whose `mu-bar` error is within `tol`, and that of every finer level
+    /// too (a level that is right by chance between two wrong ones is not a choice). `None`
+    /// when no level qualifies.
+    pub fn cheapest_within(&self, tol: f64) -> Option<&LevelRun> {
+        let mut best = None;
+        for run in self.levels.iter().rev() {
+            match self.errors(run) {
+                Some((_, e)) if e <= tol => best = Some(run),
+                _ => break,
+            }
+        }
+        best
+    }
+}
+
+/// Runs the study: each case at `levels` (plus its offset), `repeats` solves per level (the
+/// median time is kept); `progress` hears of each level as it finishes.
+pub fn run(
+    cases: &[AccuracyCase],
+    levels: &[u32],
+    repeats: usize,
+    progress: &mut dyn FnMut(&AccuracyCase, &LevelRun),
+) -> Vec<AccuracyResult> {
+    cases
+        .iter()
+        .map(|case| {
+            let mut runs = Vec::new();
+            for &l in levels {
+                let level = l + case.level_offset;
+                let mut times = Vec::new();
+                let mut outcome = Err(SolveError::InvalidParams("no solve".into()));
+                for _ in 0..repeats.max(1) {
+                    let t = Instant::now();
+                    outcome = case.contact.solve(level);
+                    times.push(t.elapsed().as_secs_f64());
+                }
+                let run = LevelRun {
+                    level,
+                    outcome,
+                    seconds: median(times),
+                };
+                progress(case, &run);
+                runs.push(run);
+            }
+            AccuracyResult {
+                name: case.name,
+                description: case.description,
+                kind: case.contact.kind(),
+                targets: case.targets,
+                level_offset: case.level_offset,
+                reference: reference(&runs),
+                domain: DomainCheck::of(case, &runs),
+                points: runs.iter().map(|r| case.contact.points(r.level)).collect(),
+                levels: runs,
+            }
+        })
+        .collect()
+}
+
+/// The recommended level of a target.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Recommendation {
+    /// Target name.
+    pub target: &'static str,
+    /// The case that decided it (the most demanding of those standing for the target).
+    pub case: &'static str,
+    /// Cheapest level with `mu-bar` within [`MU_TOLERANCE`] (`None`: none of the levels run).
+    pub level: Option<u32>,
+    /// Its `mu-bar` error.
+    pub mu_error: Option<f64>,
+    /// Its wall time, s.
+    pub seconds: Option<f64>,
+}
+
+/// For each target the study's cases stand for, the cheapest level whose sliding `mu-bar` is
+/// within `tol` of the reference for every case standing for it (the most demanding case
+/// decides; a case with no qualifying level makes the target's level `None`).
+pub fn recommend(studies: &[AccuracyResult], tol: f64) -> Vec<Recommendation> {
+    let mut targets: Vec<&'static str> = Vec::new();
+    for s in studies {
+        for t in s.targets {
+            if !targets.contains(t) {
+                targets.push(t);
+            }
+        }
+    }
+    targets
+        .into_iter()
+        .map(|target| {
+            let mut rec = Recommendation {
+                target,
+                case: "",
+                level: None,
+                mu_error: None,
+                seconds: None,
+            };
+            // Levels compared on the point scale (a line level stands beside the point level
+            // `level_offset` below it): the most demanding case has the highest.
+            let mut worst: Option<(i64, &AccuracyResult, Option<&LevelRun>)> = None;
+            for s in studies.iter().filter(|s| s.targets.contains(&target)) {
+                let choice = s.cheapest_within(tol);
+                let rank =
+                    choice.map_or(i64::MAX, |r| i64::from(r.level) - i64::from(s.level_offset));
+                if worst.as_ref().is_none_or(|w| rank > w.0) {
+                    worst = Some((rank, s, choice));
+                }
+            }
+            if let Some((_, s, choice)) = worst {
+                rec.case = s.name;
+                if let Some(r) = choice {
+                    rec.level = Some(r.level);
+                    rec.mu_error = s.errors(r).map(|e| e.1);
+                    rec.seconds = Some(r.seconds);
+                }
+            }
+            rec
+        })
+        .collect()
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// A level that converged to `h` and `mu` in `0.1 level` seconds.
+    pub(crate) fn run(level: u32, h: f64, mu: f64) -> LevelRun {
+        LevelRun {
+            level,
+            outcome: Ok(LevelOutputs {
+                h_central: h,
+                mu_bar: mu,
+                cycles: 10,
+            }),
+            seconds: 0.1 * f64::from(level),
+        }
+    }
+
+    /// A point-contact study of `levels` that stands for Fig. 3.
+    pub(crate) fn study(levels: Vec<LevelRun>) -> AccuracyResult {
+        AccuracyResult {
+            name: "t",
+            description: "",
+            kind: "point",
+            targets: &["fig3"],
+            level_offset: 0,
+            reference: reference(&levels),
+            domain: None,
+            points: levels.iter().map(|_| String::new()).collect(),
+            levels,
+        }
+    }
+
+    #[test]
+    fn richardson_removes_an_exact_second_order_error() {
+        // X_n = 2 + 3 h^2 with h = 2^-n: the extrapolation is exact (to rounding) and the
+        // observed order is 2.
+        let x = |n: u32| 2.0 + 3.0 * 4f64.powi(-(n as i32));
+        let levels: Vec<_> = (4..=7).map(|n| run(n, x(n), x(n))).collect();
+        let r = reference(&levels).unwrap();
+        assert_eq!(r.kind, "richardson");
+        assert!((r.mu_bar - 2.0).abs() < 1e-14, "{}", r.mu_bar);
+        let (oh, om) = r.order.unwrap();
+        assert!((oh - 2.0).abs() < 1e-9 && (om - 2.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_gap_below_the_finest_level_falls_back_to_the_finest() {
+        let mut levels = vec![run(5, 1.0, 40.0), run(6, 1.1, 41.0), run(7, 1.2, 41.5)];
+        levels[1].outcome = Err(SolveError::InvalidParams("x".into()));
+        let r = reference(&levels).unwrap();
+        assert_eq!(r.kind, "finest");
+        assert_eq!(r.mu_bar, 41.5);
+        assert!(reference(&[]).is_none());
+    }
+
+    #[test]
+    fn the_cheapest_level_must_hold_for_every_finer_level() {
+        // mu: 40.5 (in by chance), 38 (out), 40.1, 40.02, 40.0 -> reference 39.993...
+        let levels = vec![
+            run(4, 1.0, 40.5),
+            run(5, 1.0, 38.0),
+            run(6, 1.0, 40.1),
+            run(7, 1.0, 40.02),
+            run(8, 1.0, 40.0),
+        ];
+        let s = study(levels);
+        assert_eq!(s.cheapest_within(0.01).map(|r| r.level), Some(6));
+        assert_eq!(s.cheapest_within(1e-9).map(|r| r.level), None);
+        let recs = recommend(&[s], 0.01);
+        assert_eq!(recs.len(), 1);
+        assert_eq!((recs[0].target, recs[0].level), ("fig3", Some(6)));
+    }
+
+    #[test]
+    fn the_most_demanding_case_decides_a_target() {
+        let easy = study(vec![
+            run(4, 1.0, 40.0),
+            run(5, 1.0, 40.0),
+            run(6, 1.0, 40.0),
+        ]);
+        let hard = study(vec![
+            run(4, 1.0, 30.0),
+            run(5, 1.0, 39.0),
+            run(6, 1.0, 40.0),
+        ]);
+        let recs = recommend(&[easy, hard], 0.01);
+        assert_eq!(recs[0].level, Some(6));
+    }
+
+    #[test]
+    fn the_csv_has_a_row_for_failed_levels_too() {
+        let mut levels = vec![run(4, 1.0, 40.0), run(5, 1.0, 41.0), run(6, 1.0, 41.2)];
+        levels[0].outcome = Err(SolveError::InvalidParams("x".into()));
+        let s = study(levels);
+        let csv = super::files::to_csv(std::slice::from_ref(&s));
+        assert_eq!(csv.lines().count(), 4);
+        assert!(csv.lines().nth(1).unwrap().contains("failed"));
+    }
+}

@@ -1,0 +1,146 @@
+//! What every artefact of the paper is ([`Artefact`]) and what building one reports
+//! ([`TargetReport`]). The artefacts (one module each) build on this file, the registry
+//! (`paper/mod.rs`) lists them, the report reads what they report.
+
+use crate::paper::mastercurve::fit::{fit, Fit, FIT_TAU_C_MIN};
+use crate::pipeline::context::Context;
+use crate::pipeline::job::Job;
+
+/// The paper's working level (256 x 256), the default of every computed figure.
+pub const WORKING_LEVEL: u32 = 7;
+
+/// Level of the line contacts of Fig. 7 (512 intervals): sliding `mu-bar` within 0.2 % of
+/// level 11 on the heaviest Table 3 case (docs/LINE_NOTES.md), a few tenths of a second per
+/// case.
+pub const LINE_LEVEL: u32 = 8;
+
+/// A table or figure of the paper (or beyond it) as a named target: what `repro list` shows,
+/// what `repro <name>`, `repro all`, `repro check`, `--shard` and `--offline` run.
+pub trait Artefact: Sync {
+    /// Name on the command line, and stem of its files.
+    fn name(&self) -> &'static str;
+
+    /// One line for `repro list` and the help of `repro <name>`.
+    fn describe(&self) -> &'static str;
+
+    /// Level of `repro <name>` without `--level`: the cheapest level whose sliding `mu-bar`
+    /// is within 1 % of the Richardson extrapolation for the case that stands for the target
+    /// in `repro accuracy` (figures/accuracy_levels.csv). `make figures` builds every target
+    /// at the paper's working level instead. `None`: the target solves nothing, or at levels
+    /// of its own.
+    fn default_level(&self) -> Option<u32> {
+        None
+    }
+
+    /// Every solve it needs in the context, as jobs (none for the emitted tables and Fig. 8):
+    /// what a shard divides and what `--offline` must find in the cache.
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String>;
+
+    /// Computes it (its solves through the context's cache) and writes its files into the
+    /// context's output folder.
+    fn build(&self, ctx: &Context) -> Result<TargetReport, String>;
+}
+
+/// A claim of the paper measured on a target's results, for the report's table of claims
+/// and `figures/summary.csv`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Measure {
+    /// The target's points with `tau_c >= FIT_TAU_C_MIN` against Eq. (13): the deviations and
+    /// the least-squares `c` with its interval.
+    Eq13(Fit),
+    /// The least-squares `c` of Eq. (13) over every point of the target.
+    Eq13AllPoints {
+        /// The constant.
+        c: f64,
+    },
+    /// The refined friction formula, fitted without `target`'s cases and tested on them
+    /// (the `mastercurve` target measures it for each figure and for all of them).
+    RefinedCrossValidation {
+        /// The target whose cases were held out.
+        target: &'static str,
+        /// RMS relative deviation on them.
+        rms_rel_dev: f64,
+    },
+}
+
+impl Measure {
+    /// The measures of points `(tau_c, mu-bar)` against Eq. (13): the fit over the Eyring
+    /// regime (`tau_c >= FIT_TAU_C_MIN`) and `c` over all, each where there are enough points.
+    pub fn eq13(points: &[(f64, f64)]) -> Vec<Measure> {
+        let in_range: Vec<(f64, f64)> = points
+            .iter()
+            .copied()
+            .filter(|p| p.0 >= FIT_TAU_C_MIN)
+            .collect();
+        let mut out: Vec<Measure> = fit(&in_range).map(Measure::Eq13).into_iter().collect();
+        out.extend(fit(points).map(|f| Measure::Eq13AllPoints { c: f.c }));
+        out
+    }
+}
+
+/// What building a target reports: its row of `figures/summary.csv`, its line on stdout and
+/// its section of `figures/index.html`.
+#[derive(Debug, Clone)]
+pub struct TargetReport {
+    /// Target name.
+    pub name: &'static str,
+    /// Title.
+    pub title: String,
+    /// Cases computed or emitted.
+    pub cases: usize,
+    /// Cases solved (computed targets).
+    pub solved: Option<usize>,
+    /// Of those, taken from the cache.
+    pub cached: Option<usize>,
+    /// Grid level.
+    pub level: Option<u32>,
+    /// Wall time, s.
+    pub seconds: f64,
+    /// Files written, relative to the output folder.
+    pub files: Vec<String>,
+    /// The paper's claim, for the report.
+    pub paper_claim: String,
+    /// Ours, for the report.
+    pub ours: String,
+    /// The result in a few words, for the line printed after the target is built.
+    pub headline: Option<String>,
+    /// The paper's claims measured on it (or, for the mastercurve's cross-validation, on
+    /// other targets).
+    pub measures: Vec<Measure>,
+}
+
+impl TargetReport {
+    /// The report of a target that emits `files` from `cases/` data (no solves).
+    pub fn emitted(name: &'static str, title: &str, cases: usize, files: Vec<String>) -> Self {
+        TargetReport {
+            name,
+            title: title.to_string(),
+            cases,
+            solved: None,
+            cached: None,
+            level: None,
+            seconds: 0.0,
+            files,
+            paper_claim: String::new(),
+            ours: "emitted from cases/".to_string(),
+            headline: None,
+            measures: Vec::new(),
+        }
+    }
+
+    /// Its points with `tau_c >= FIT_TAU_C_MIN` against Eq. (13), if it has enough.
+    pub fn eq13(&self) -> Option<&Fit> {
+        self.measures.iter().find_map(|m| match m {
+            Measure::Eq13(f) => Some(f),
+            _ => None,
+        })
+    }
+
+    /// The least-squares `c` of Eq. (13) over all its points, if it has enough.
+    pub fn eq13_c_all(&self) -> Option<f64> {
+        self.measures.iter().find_map(|m| match m {
+            Measure::Eq13AllPoints { c } => Some(*c),
+            _ => None,
+        })
+    }
+}

@@ -1,0 +1,129 @@
+//! The pictures of the computed figures, in the paper's form: Fig. 1 on a log `x` axis,
+//! Figs. 2-7 `mu-bar` against `tau_c` on log-linear axes with Eq. (13) dashed. Series are split
+//! by the case's defining parameter so that the collapse (or not) is visible.
+
+use crate::paper::mastercurve::fit::PAPER_C;
+use crate::paper::picture::eq13_curve;
+use crate::physics::case::CaseForm;
+use crate::pipeline::executor::PointRun;
+use crate::plot::{render_svg, Figure, Marker, Scale, Series};
+
+const MARKERS: [Marker; 5] = [
+    Marker::Circle,
+    Marker::Square,
+    Marker::Triangle,
+    Marker::Diamond,
+    Marker::Cross,
+];
+
+/// The series key of a case: `L` for the Barus sweep, temperature for the lubricant sweeps,
+/// `Rx/Ry` for Fig. 7.
+fn series_key(name: &str, run: &PointRun) -> String {
+    let g = &run.problem.groups;
+    match name {
+        "fig1" | "fig2" | "fig3" => format!("L = {}", g.l),
+        "fig7" => format!(
+            "Rx/Ry = {}",
+            if (g.d - 0.5).abs() < 1e-9 {
+                "1/2".to_string()
+            } else if (g.d - 0.2).abs() < 1e-9 {
+                "1/5".to_string()
+            } else {
+                format!("{:.3}", g.d)
+            }
+        ),
+        _ => match &run.case.spec {
+            CaseForm::Physical(p) => match p.lubricant.temperature_c() {
+                Some(t) => format!("{t} °C"),
+                None => "given lubricant".into(),
+            },
+            CaseForm::Dimensionless(_) => "dimensionless".into(),
+        },
+    }
+}
+
+/// Renders figure `name` with `title` from its runs, `xy` giving each solved case's point,
+/// with `extra` series (the line contacts of Fig. 7) drawn after them.
+pub fn svg(
+    name: &str,
+    title: &str,
+    runs: &[PointRun],
+    xy: &dyn Fn(&PointRun) -> Option<(f64, f64)>,
+    severity: bool,
+    total: bool,
+    extra: &[Series],
+) -> Result<Option<String>, String> {
+    let mut keys: Vec<String> = Vec::new();
+    let mut series: Vec<Series> = Vec::new();
+    for r in runs {
+        let Some(p) = xy(r) else { continue };
+        let key = series_key(name, r);
+        let i = match keys.iter().position(|k| *k == key) {
+            Some(i) => i,
+            None => {
+                keys.push(key.clone());
+                series.push(Series {
+                    label: key,
+                    points: Vec::new(),
+                    marker: MARKERS[(keys.len() - 1) % MARKERS.len()],
+                    ..Series::default()
+                });
+                keys.len() - 1
+            }
+        };
+        series[i].points.push(p);
+    }
+    for e in extra {
+        series.push(Series {
+            marker: MARKERS[series.len() % MARKERS.len()],
+            ..e.clone()
+        });
+    }
+    let failed = runs.iter().filter(|r| r.solved().is_none()).count();
+    let xs: Vec<f64> = series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.0))
+        .filter(|x| *x > 0.0 && x.is_finite())
+        .collect();
+    let (x_min, x_max) = xs
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    let curves = if severity || xs.is_empty() {
+        Vec::new()
+    } else {
+        vec![eq13_curve(x_min, x_max, PAPER_C, 200)]
+    };
+    let y_label = if total {
+        "total reduced friction μ̄"
+    } else {
+        "sliding reduced friction μ̄"
+    };
+    let x_label = if severity {
+        "S̄^{1/4} M L^{3}"
+    } else {
+        "characteristic shear stress τ̄_{c}"
+    };
+    let note = (failed > 0).then(|| {
+        format!(
+            "{failed} of {} cases failed (not converged or film collapse); not shown",
+            runs.len()
+        )
+    });
+    let fig = Figure {
+        title: title.to_string(),
+        x_label: x_label.into(),
+        y_label: y_label.into(),
+        x_scale: Scale::Log,
+        y_scale: Scale::Linear,
+        x_range: None,
+        y_range: None,
+        series,
+        curves,
+        note,
+    };
+    render_svg(&fig)
+        .map(Some)
+        .map_err(|e| format!("{name}.svg: {e}"))
+}

@@ -1,0 +1,88 @@
+//! The paper's artefacts: one module per table or figure (or study beyond the paper), each
+//! with its cases, its computation and its picture, and the registry every command reads.
+//!
+//! An artefact is an [`Artefact`] (`artefact.rs`); [`REGISTRY`] lists them in the paper's
+//! order. `repro list`, the subcommands `repro <target>`, `repro all` (`make figures`),
+//! `repro check`, `repro slurm`, `--shard` and `--offline` all read it: adding a target is
+//! adding its module and one line here.
+//!
+//! Beside the targets: [`prediction`] (the mastercurve as a tool, `repro predict`) and
+//! [`accuracy`] (`repro accuracy`, the level study behind each target's default level).
+
+pub mod accuracy;
+pub mod artefact;
+pub mod cases;
+pub mod fig8;
+pub mod figures;
+pub mod lss;
+pub mod mastercurve;
+pub mod picture;
+pub mod prediction;
+pub mod table4;
+pub mod tables;
+pub mod thermal;
+
+use crate::pipeline::context::Context;
+use crate::pipeline::job::Job;
+use crate::pipeline::provenance::{Provenance, SUFFIX};
+pub use artefact::{Artefact, TargetReport};
+use std::time::Instant;
+
+/// Every target, in the paper's order.
+pub static REGISTRY: &[&dyn Artefact] = &[
+    &tables::Table1,
+    &tables::Table2,
+    &tables::Table3,
+    &table4::Table4,
+    &figures::FIG1,
+    &figures::FIG2,
+    &figures::FIG3,
+    &figures::FIG4,
+    &figures::FIG5,
+    &figures::FIG6,
+    &figures::FIG7,
+    &fig8::Fig8,
+    &mastercurve::Mastercurve,
+    &thermal::ShearHeating,
+    &lss::Lss,
+];
+
+/// The target named `name`.
+pub fn find(name: &str) -> Option<&'static dyn Artefact> {
+    REGISTRY.iter().copied().find(|a| a.name() == name)
+}
+
+/// The target named `name`, or an error that says which targets there are.
+pub fn known(name: &str) -> Result<&'static dyn Artefact, String> {
+    find(name).ok_or_else(|| {
+        let known: Vec<&str> = REGISTRY.iter().map(|a| a.name()).collect();
+        format!("unknown target '{name}' (known: {})", known.join(", "))
+    })
+}
+
+/// Every solve of the targets `names` in the context, each with its target: what a run of
+/// them shards and what `--offline` must find in the cache.
+pub fn jobs_of(names: &[&str], ctx: &Context) -> Result<Vec<(String, Job)>, String> {
+    let mut out = Vec::new();
+    for n in names {
+        let jobs = known(n)?.jobs(ctx)?;
+        out.extend(jobs.into_iter().map(|j| (n.to_string(), j)));
+    }
+    Ok(out)
+}
+
+/// Builds `artefact`, timed, with its provenance sidecar (the targets that solve nothing get
+/// one that says so).
+pub fn build(artefact: &dyn Artefact, ctx: &Context) -> Result<TargetReport, String> {
+    let start = Instant::now();
+    let mut report = artefact.build(ctx)?;
+    if !report.files.iter().any(|f| f.ends_with(SUFFIX)) {
+        let name = artefact.name();
+        let sidecar = Provenance::new(name, &report.files).to_json();
+        report
+            .files
+            .push(ctx.write(&format!("{name}{SUFFIX}"), &sidecar)?);
+    }
+    report.seconds = start.elapsed().as_secs_f64();
+    Ok(report)
+}

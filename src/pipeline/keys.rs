@@ -1,0 +1,47 @@
+//! Cache keys: what makes two solves the same. A key is the SHA-256 of the canonical JSON of
+//! everything a result depends on ([`key_of`]), so a result is reused exactly where it would
+//! come out the same, and recomputed where anything it depends on changed.
+
+use super::cache::key_of;
+use crate::physics::case::{Case, Physics};
+use crate::physics::thermal::{TARGET_INPUTS, THERMAL_REVISION};
+use crate::solver::line;
+use crate::solver::point::{Params, SOLVER_REVISION};
+use serde::Serialize;
+
+/// The revision of the line-contact numerics, part of every line-contact cache key.
+pub use crate::solver::line::SOLVER_REVISION as LINE_SOLVER_REVISION;
+
+/// The cache key of a case at the given solver parameters: the case, the parameters a target
+/// can set (level, domain, rolling friction, the film check), the solver revision, which is
+/// raised whenever a default parameter or the numerics change, the thermal post-process's
+/// inputs and revision, and the key of the base it starts from
+/// ([`super::base::base_of`]), whose solution is part of its arithmetic.
+pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String {
+    let d = &params.domain;
+    key_of(&(
+        case,
+        params.level,
+        (d.x_start, d.x_end, d.y_half),
+        params.rolling_friction,
+        (params.require_positive_film, params.film_refinement_levels),
+        SOLVER_REVISION,
+        (THERMAL_REVISION, TARGET_INPUTS),
+        base_key,
+    ))
+}
+
+/// The cache key of a line contact at the given solver parameters (the parameters a target
+/// can set and the revision, as [`case_key`]).
+pub fn line_key<C: Serialize>(case: &C, physics: &Physics, params: &line::Params) -> String {
+    key_of(&(
+        "line",
+        case,
+        physics,
+        params.level,
+        (params.domain.x_start, params.domain.x_end),
+        params.rolling_friction,
+        params.require_positive_film,
+        LINE_SOLVER_REVISION,
+    ))
+}
