@@ -40,7 +40,7 @@ pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-14";
+pub const SOLVER_REVISION: &str = "point-15";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -569,6 +569,11 @@ fn newton_solve(
             box_radius: params.box_radius,
             krylov_restart: KRYLOV_RESTART,
             krylov_iterations: params.krylov_iterations,
+            first_forcing: if mg.warm {
+                newton::WARM_FIRST_FORCING
+            } else {
+                newton::FIRST_FORCING
+            },
         },
         &mut |level: &level::Level, step: &newton::Step| {
             steps += 1;

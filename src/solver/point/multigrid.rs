@@ -20,6 +20,9 @@ pub(crate) struct Hierarchy {
     /// The scale of the rolling friction (`Problem`'s), where it is computed: the cycles'
     /// stopping rule watches it.
     pub rolling_scale: Option<f64>,
+    /// The state started from a converged related solution ([`super::warm`]): the
+    /// Newton-Krylov finish solves its first linear system tightly.
+    pub warm: bool,
     /// Current gain of the force-balance update (adapted, see `relax_force_balance`).
     gain: f64,
     /// The load defect at the previous update.
@@ -40,6 +43,7 @@ impl Hierarchy {
             far,
             h0,
             rolling_scale: None,
+            warm: false,
             gain: params.force_balance_gain,
             last_defect: 0.0,
             scratch: LineScratch::new(),
