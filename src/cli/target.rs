@@ -11,6 +11,8 @@ use repro::paper::table4;
 use repro::paper::{self, Artefact, REGISTRY};
 use repro::pipeline::context::Context;
 use repro::pipeline::csv::write_atomic;
+use repro::pipeline::executor::{run_jobs, RunProgress};
+use repro::pipeline::job::Job;
 use repro::pipeline::sweep::Sweep;
 use repro::report;
 use std::time::Instant;
@@ -61,15 +63,41 @@ pub fn all(args: &TargetArgs) -> Result<bool> {
     if let Some(s) = shard::detect(args)? {
         return shard::run(args, s, |ctx| target_jobs(&names, ctx));
     }
+    let mut solved = None;
     let built = in_context(args, true, |ctx| {
         check_offline(&names, ctx)?;
+        solved = solve_together(&names, ctx)?;
         report::build_all(REGISTRY, ctx).map_err(anyhow::Error::msg)
     })?;
+    if let Some((cases, seconds)) = solved {
+        println!("all: {cases} cases of every target solved together in {seconds:.1} s");
+    }
     for b in &built {
         println!("{}", summary_line(b));
     }
     println!("wrote {}", args.out.join("summary.csv").display());
     Ok(true)
+}
+
+/// Solves the missing cases of the targets `names` in one pool into the cache, before the
+/// targets are assembled from it: the heaviest trees of every target first, so that no
+/// target's last solves leave a core idle (one target after another, the cold run of every
+/// target at level 7 took about 1 % longer wall). The number of distinct cases and the wall time; nothing where
+/// there is no cache to fill or nothing may be solved.
+fn solve_together(names: &[&str], ctx: &Context) -> Result<Option<(usize, f64)>> {
+    if ctx.offline || ctx.cache.is_none() {
+        return Ok(None);
+    }
+    let start = Instant::now();
+    let mut seen = std::collections::BTreeSet::new();
+    let jobs: Vec<Job> = target_jobs(names, ctx)?
+        .into_iter()
+        .map(|(_, j)| j)
+        .filter(|j| seen.insert(j.key.clone()))
+        .collect();
+    let progress = |p: RunProgress| (ctx.progress)("all", p);
+    run_jobs("all", &jobs, ctx.cache_policy(), &progress, ctx.warn).map_err(|e| anyhow!(e))?;
+    Ok(Some((jobs.len(), start.elapsed().as_secs_f64())))
 }
 
 /// `repro run my-study.toml`: the same pipeline as a figure target.

@@ -327,7 +327,7 @@ fn provenance(
 }
 
 /// Writes the sidecar of a sweep figure and lists it among the report files.
-fn write_provenance(
+pub(crate) fn write_provenance(
     stem: &str,
     report: &mut TargetReport,
     runs: &[PointRun],
