@@ -219,6 +219,7 @@ mod tests {
                     h_min: -1e-3,
                     level: 5,
                     level_needed: Some(6),
+                    finest_level: 9,
                     cycle: 2,
                     residual_history: history.clone(),
                 },

@@ -54,9 +54,9 @@ const NEW_COLUMNS_SHARE: f64 = 0.02;
 #[derive(Default)]
 pub(crate) struct LuStorage {
     /// The last numeric factor, refilled by the next factorisation whatever its order
-    /// (faer's supernodal factor; its simplicial one, which faer's own driver chose for small
-    /// systems before revision point-8, kept a longer system's column pointers and failed an
-    /// assertion on a shorter one).
+    /// (faer's supernodal factor; its simplicial one, which faer's own driver chooses for
+    /// small systems, kept a longer system's column pointers and failed an assertion on a
+    /// shorter one).
     numeric: SupernodalLu<usize, Factor>,
     /// The last COLAMD order's position of each label, `u32::MAX` for none.
     ranks: Vec<u32>,

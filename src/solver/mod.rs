@@ -18,9 +18,9 @@ pub mod thermal;
 /// work by the degree of parallelism it is given, so the last bits of a factorisation, and of
 /// every Newton iterate after it, depend on that degree: at faer's default (rayon's thread
 /// count) a Slurm task on one CPU and a two-core workstation gave a case different digits.
-/// One thread gives the same bits everywhere, and it is also the faster choice: until
-/// revision point-8 the degree was 2, and the split's scheduling (threads spinning in
-/// `sched_yield`, freshly mapped buffers) cost more than the second core saved. The M = 19 205
+/// One thread gives the same bits everywhere, and it is also the faster choice: with a
+/// degree of 2 the split's scheduling (threads spinning in `sched_yield`, freshly mapped
+/// buffers) cost more than the second core saved. The M = 19 205
 /// case at level 8 took 48.5 s wall and 57.7 s CPU on two threads, 43.7 s and 43.7 s on one;
 /// three 5P4E and traction-fluid cases 17-30 % less CPU, and less wall time too. A sweep
 /// runs cases side by side on every core anyway.

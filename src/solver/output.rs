@@ -194,7 +194,7 @@ pub enum SolveError {
         residual_history: Vec<f64>,
     },
     /// The film collapsed (`H <= 0` somewhere): the grid is too coarse for this load.
-    #[error("film thickness became non-positive (min H = {h_min:.3e}) at level {level}, cycle {cycle}: {advice} (history: {history})", history = format_history(residual_history), advice = level_advice(*level_needed))]
+    #[error("film thickness became non-positive (min H = {h_min:.3e}) at level {level}, cycle {cycle}: {advice} (history: {history})", history = format_history(residual_history), advice = level_advice(*level_needed, *finest_level))]
     FilmCollapse {
         /// Minimum film.
         h_min: f64,
@@ -203,6 +203,8 @@ pub enum SolveError {
         /// The level estimated to resolve the film, where the solver can estimate it
         /// ([`crate::solver::point::level_to_resolve`]).
         level_needed: Option<u32>,
+        /// The finest level the solver accepts.
+        finest_level: u32,
         /// Cycle.
         cycle: usize,
         /// Residual after each completed cycle.
@@ -232,15 +234,14 @@ impl SolveError {
 }
 
 /// What a collapsed film asks of the grid.
-fn level_advice(needed: Option<u32>) -> String {
-    use crate::solver::point::MAX_LEVEL;
+fn level_advice(needed: Option<u32>, finest: u32) -> String {
     match needed {
-        Some(n) if n <= MAX_LEVEL => {
+        Some(n) if n <= finest => {
             format!("the grid cannot resolve this film; level {n} is estimated to (--level {n})")
         }
         Some(n) => format!(
             "the grid cannot resolve this film; level {n} is estimated to, beyond the \
-             solver's finest level {MAX_LEVEL}"
+             solver's finest level {finest}"
         ),
         None => "the grid cannot resolve this film; a finer level may".to_string(),
     }

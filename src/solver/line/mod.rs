@@ -268,6 +268,7 @@ pub fn solve(
             h_min: film.h_min,
             level: params.level,
             level_needed: None,
+            finest_level: MAX_LEVEL,
             cycle: cycles,
             residual_history: history,
         });

@@ -1037,9 +1037,8 @@ fn solve_with(
     // at the contact edge exceeds it) then asks for a finer grid: the converged solution
     // interpolated up, cycled there (where the cycles converged the level below), and
     // finished by Newton-Krylov from the better of the interpolated start and the cycles'
-    // best state where they do not converge. (Newton-Krylov alone, as before revision
-    // point-5, took 7 steps of 4-5 s each at level 8 on these cases; the cycles converge in
-    // about 20 of 0.2 s.)
+    // best state where they do not converge. (Newton-Krylov alone takes 7 steps of 4-5 s
+    // each at level 8 on these cases; the cycles converge in about 20 of 0.2 s.)
     let mut refinements = 0;
     loop {
         settle_top(
@@ -1103,6 +1102,7 @@ fn solve_with(
             h_min: film.h_min,
             level,
             level_needed: Some(level_to_resolve(problem, level, film.h_min)),
+            finest_level: MAX_LEVEL,
             cycle: cycles,
             residual_history: history,
         });

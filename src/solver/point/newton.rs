@@ -142,8 +142,8 @@ pub(crate) fn iterate(
     let g = level.grid;
     // The row scales are those of this state: a level just interpolated (the next level of
     // a grid sequence, a refined level) holds the coefficients of its last relaxation, or
-    // none at all (before revision point-7 the first step of a refined level was scaled by
-    // its wedge term alone and made little progress: 6 Newton steps at level 8 instead of 5).
+    // none at all (scaled by its wedge term alone, the first step of a refined level made
+    // little progress: 6 Newton steps at level 8 instead of 5).
     level.refresh(*h0, model);
     let mut scale = row_scales(level);
     let mut ev = evaluate(level, model, *h0, &scale);

@@ -178,7 +178,7 @@ mod tests {
 
     #[test]
     fn a_residual_standing_still_is_not_falling() {
-        // The last cycles of the traction-fluid case above (level 7, point-9): the pressure
+        // The last cycles of the traction-fluid case above (level 7): the pressure
         // change fell from 2.2e-6 to 7.5e-7 over these cycles, the residual did not.
         let stalled = [3.388e-4, 3.390e-4, 3.353e-4, 3.378e-4];
         assert!(!residual_falls(&stalled));
