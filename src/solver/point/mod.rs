@@ -40,7 +40,7 @@ pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-15";
+pub const SOLVER_REVISION: &str = "point-16";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -570,7 +570,7 @@ fn newton_solve(
             krylov_restart: KRYLOV_RESTART,
             krylov_iterations: params.krylov_iterations,
             first_forcing: if mg.warm {
-                newton::WARM_FIRST_FORCING
+                newton::warm_first_forcing(level_number(level))
             } else {
                 newton::FIRST_FORCING
             },

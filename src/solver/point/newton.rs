@@ -108,7 +108,7 @@ pub(crate) struct Limits {
     pub krylov_restart: usize,
     /// Most GMRES iterations per Newton step.
     pub krylov_iterations: usize,
-    /// The forcing term of the first step ([`FIRST_FORCING`], or [`WARM_FIRST_FORCING`]
+    /// The forcing term of the first step ([`FIRST_FORCING`], or [`warm_first_forcing`]
     /// from a warm start).
     pub first_forcing: f64,
 }
@@ -311,14 +311,24 @@ const STALLED_STEPS: usize = 3;
 /// The forcing term of the first step: its linear system solved to a tenth.
 pub(crate) const FIRST_FORCING: f64 = 0.1;
 
-/// The forcing term of the first step from a warm start ([`super::warm`]). Near the solution
-/// a first step solved to a tenth leaves about a tenth of the distance for the next ones,
-/// where a step solved to a hundredth is in the quadratic regime at once; the stopping
-/// rule is the same. Measured on five Figs. 4-6 families (members from their base, level
-/// 7; M 19 205 refined to level 8): Newton steps 22-33 -> 16-29 per family and the members'
-/// time -9 to -27 % (the M 19 205 family's every member in two level-8 steps instead of two
-/// or three); 1e-3 saved no more.
-pub(crate) const WARM_FIRST_FORCING: f64 = 0.01;
+/// The forcing term of the first step from a warm start ([`super::warm`]) on a finest level
+/// `level`. Near the solution a first step solved to a tenth leaves about a tenth of the
+/// distance for the next ones, where a step solved to a hundredth is in the quadratic regime
+/// at once; the stopping rule is the same. How far to go is a trade of GMRES iterations
+/// against factorisations, and a factorisation's share grows with the level. Measured at
+/// level 7 (four Figs. 4-6 families, members from their base): 0.01 takes Newton steps
+/// 22-33 -> 16-29 per family and the members' time -9 to -27 % against 0.1; 1e-3 gains
+/// nothing more (-6 to +4 %), 1e-4 and 1e-6 cost 9-24 % more than 0.01 (more GMRES
+/// iterations than the steps they save). At
+/// level 8 (the M 19 205 family) 1e-4 solves every member in one Newton step instead of two,
+/// the members' time -34 % against 0.01, outputs within 1e-6 of solves to 1e-11.
+pub(crate) fn warm_first_forcing(level: u32) -> f64 {
+    if level >= 8 {
+        1e-4
+    } else {
+        0.01
+    }
+}
 
 /// GMRES iterations above which a step's lagged factor (the last step's, kept where the
 /// active set has not changed) gives way to a new one, the system solved again. A fresh
