@@ -27,6 +27,7 @@ struct LevelRow<'a> {
     status: String,
     domain_h_central_change: Option<f64>,
     domain_mu_bar_change: Option<f64>,
+    domain_seconds: Option<Decimals<3>>,
 }
 
 /// `figures/accuracy.csv`: one row per case and level.
@@ -34,6 +35,7 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
     let mut out = Vec::new();
     for s in studies {
         let domain = s.domain.as_ref().and_then(|d| d.change.as_ref().ok());
+        let domain_seconds = s.domain.as_ref().map(|d| Decimals(d.seconds));
         let r = s.reference;
         let order = r.and_then(|r| r.order);
         for (run, points) in s.levels.iter().zip(&s.points) {
@@ -53,6 +55,7 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
                 seconds: Decimals(run.seconds),
                 domain_h_central_change: domain.map(|d| d.0),
                 domain_mu_bar_change: domain.map(|d| d.1),
+                domain_seconds,
                 ..LevelRow::default()
             };
             out.push(match &run.outcome {
@@ -144,9 +147,10 @@ pub fn to_text(studies: &[AccuracyResult], recs: &[Recommendation]) -> String {
         }
         if let Some(d) = &s.domain {
             out.push_str(&format!(
-                "  domain: inlet and sides doubled at level {}'s mesh (level {}): {}\n",
+                "  domain: inlet and sides doubled at level {}'s mesh (level {}, {:.3} s): {}\n",
                 d.level - 1,
                 d.level,
+                d.seconds,
                 match &d.change {
                     Ok((h, mu)) => format!("Hc moves {:.2e}, mu-bar {:.2e}", h, mu),
                     Err(e) => format!("failed: {e}"),
