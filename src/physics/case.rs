@@ -263,6 +263,39 @@ pub(super) fn slip_in_range(name: &'static str, s: f64) -> Result<f64, CaseError
     }
 }
 
+/// The checked Moes groups of a case given dimensionlessly, point or line contact: `M`,
+/// `L`, `S-bar` and `S`, and `1/tau0 = S-bar / S` in the units `Rx = E' = 1`,
+/// `U = eta0 u_s / (E' Rx) = 1` (zero without an Eyring stress, `S-bar = 0`).
+pub(super) struct MoesInputs {
+    pub m: f64,
+    pub l: f64,
+    pub slip: f64,
+    pub tau0_inv: f64,
+}
+
+impl MoesInputs {
+    /// Checks `M`, `L` (positive), `S-bar` (non-negative) and `S` (in `[0, 2]`, positive
+    /// where `S-bar` is).
+    pub(super) fn check(m: f64, l: f64, s_bar: f64, slip: f64) -> Result<Self, CaseError> {
+        let m = positive("m", m)?;
+        let l = positive("l", l)?;
+        if !(s_bar >= 0.0 && s_bar.is_finite()) {
+            return Err(field("s-bar", format!("must be >= 0, got {s_bar}")));
+        }
+        let slip = slip_in_range("slip", slip)?;
+        if s_bar > 0.0 && slip == 0.0 {
+            return Err(field("slip", "S-bar > 0 needs a slide-to-roll ratio S > 0"));
+        }
+        let tau0_inv = if s_bar > 0.0 { s_bar / slip } else { 0.0 };
+        Ok(MoesInputs {
+            m,
+            l,
+            slip,
+            tau0_inv,
+        })
+    }
+}
+
 /// The physical `p_H` (Pa) and `eta0` (Pa s) of a case given in Moes groups, point or line
 /// contact: checked when given, required by the laws that need them (Roelands both,
 /// Dowson-Higginson `p_H`), NaN when no law asked for them.
@@ -439,8 +472,12 @@ impl Problem {
     }
 
     fn from_dimensionless(d: &DimensionlessCase, physics: Physics) -> Result<Self, CaseError> {
-        let m = positive("m", d.m)?;
-        let l = positive("l", d.l)?;
+        let MoesInputs {
+            m,
+            l,
+            slip,
+            tau0_inv,
+        } = MoesInputs::check(d.m, d.l, d.s_bar, d.slip)?;
         let ratio = positive("d", d.d)?;
         if ratio > 1.0 {
             return Err(field(
@@ -448,21 +485,13 @@ impl Problem {
                 format!("Rx/Ry must lie in (0, 1] (kappa in (0, 1]), got {ratio}"),
             ));
         }
-        if !(d.s_bar >= 0.0 && d.s_bar.is_finite()) {
-            return Err(field("s-bar", format!("must be >= 0, got {}", d.s_bar)));
-        }
-        let slip = slip_in_range("slip", d.slip)?;
-        if d.s_bar > 0.0 && slip == 0.0 {
-            return Err(field("slip", "S-bar > 0 needs a slide-to-roll ratio S > 0"));
-        }
         // In units Rx = E' = 1 and U = eta0 u_s / (E' Rx) = 1 the load is M and alpha is L;
         // every dimensionless group is independent of U (Moes' similarity).
         let hz = Hertz::from_load(m, 1.0, 1.0 / ratio, 1.0);
-        let tau0_inv = if d.s_bar > 0.0 { d.s_bar / slip } else { 0.0 };
         let groups = Groups::new(&hz, 1.0, l, tau0_inv, slip);
         let (ph_pa, eta0) = physical_scales(physics, d.ph_pa, d.eta0_pa_s)?;
         let shear = shear_law(physics.rheology, 1.0 / (tau0_inv * hz.ph), ph_pa)?;
-        let mut problem = Self::assemble(
+        Ok(Self::assemble(
             groups,
             hz,
             physics,
@@ -470,11 +499,7 @@ impl Problem {
             eta0,
             groups.alpha_bar / ph_pa,
             ph_pa,
-        );
-        if physics.viscosity == ViscosityLaw::Barus {
-            problem.viscosity = Viscosity::barus(groups.alpha_bar);
-        }
-        Ok(problem)
+        ))
     }
 
     fn assemble(

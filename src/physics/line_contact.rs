@@ -12,7 +12,7 @@
 
 use super::case::{
     eyring_n_s, field, hertzian_pressure, physical_scales, positive, shear_law, slip_in_range,
-    CaseError, LubricantSpec, PhysicalCase, Physics,
+    CaseError, LubricantSpec, MoesInputs, PhysicalCase, Physics,
 };
 use super::density::Density;
 use super::lubricant::LubricantTable;
@@ -413,17 +413,13 @@ impl LineProblem {
         c: &LineDimensionlessCase,
         physics: Physics,
     ) -> Result<Self, CaseError> {
-        let m = positive("m", c.m)?;
-        let l = positive("l", c.l)?;
-        if !(c.s_bar >= 0.0 && c.s_bar.is_finite()) {
-            return Err(field("s-bar", format!("must be >= 0, got {}", c.s_bar)));
-        }
-        let slip = slip_in_range("slip", c.slip)?;
-        if c.s_bar > 0.0 && slip == 0.0 {
-            return Err(field("slip", "S-bar > 0 needs a slide-to-roll ratio S > 0"));
-        }
+        let MoesInputs {
+            m,
+            l,
+            slip,
+            tau0_inv,
+        } = MoesInputs::check(c.m, c.l, c.s_bar, c.slip)?;
         let hertz = LineHertz::from_load(m, 1.0, 1.0);
-        let tau0_inv = if c.s_bar > 0.0 { c.s_bar / slip } else { 0.0 };
         let groups = LineGroups::new(&hertz, 1.0, l, tau0_inv, slip);
         let (ph_pa, eta0) = physical_scales(physics, c.ph_pa, c.eta0_pa_s)?;
         let shear = shear_law(physics.rheology, 1.0 / (tau0_inv * hertz.ph), ph_pa)?;

@@ -14,7 +14,9 @@
 //! The Hertz scales, Moes groups and viscosity laws are those of [`super::case`],
 //! [`super::line_contact`] and [`super::viscosity`]: nothing is recomputed here.
 
-use super::case::{CaseError, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
+use super::case::{
+    field, positive, CaseError, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem,
+};
 use super::density::DensityLaw;
 use super::film::hc_eq10;
 use super::hertz::Hertz;
@@ -192,21 +194,6 @@ impl Characteristic {
     /// Friction coefficient from a reduced one: `mu = mu-bar tau0 / p_H`.
     pub fn friction(&self, mu_bar: f64, tau0_pa: f64) -> f64 {
         mu_bar * tau0_pa / self.ph_pa
-    }
-}
-
-fn field(name: &'static str, message: impl Into<String>) -> CaseError {
-    CaseError::Field {
-        field: name,
-        message: message.into(),
-    }
-}
-
-fn positive(name: &'static str, v: f64) -> Result<f64, CaseError> {
-    if v > 0.0 && v.is_finite() {
-        Ok(v)
-    } else {
-        Err(field(name, format!("must be positive and finite, got {v}")))
     }
 }
 
