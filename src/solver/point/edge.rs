@@ -1,0 +1,118 @@
+//! The far field's self-consistency: the edge put anew for the converged film constant and
+//! the solve converged again until the edge settles.
+
+use super::*;
+
+/// Rounds of the far field's self-consistency on level `k` (the top, converged by
+/// `method`). The edge takes the asymptote for the film constant of the moment its level
+/// became the top (the coarser level's `Delta`, or a warm start's base's), and the converged
+/// `Delta` differs; so the edge is put anew for the converged `Delta` and the solve
+/// converged again from where it stands (cycles that stop on settled outputs, or Newton), until
+/// the edge moves by less than [`EDGE_SETTLED`]. Without it the answer depended on the path
+/// that reached it: Fig. 6's 5P4E at 1 GPa, 7 m/s, S 0.5 %, tau0 4 MPa at level 5 gave a
+/// sliding `mu-bar` 0.8 % apart from a cold and from a warm start, both converged. Where
+/// there is no far field, or it is fitted to the solution, nothing is done. False where a
+/// reconvergence failed; the cycles and Newton work are counted.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn settle_edge(
+    mg: &mut Hierarchy,
+    k: usize,
+    params: &Params,
+    method: Method,
+    newton_used: &mut bool,
+    cycles: &mut usize,
+    history: &mut Vec<f64>,
+    work: &mut Work,
+    observe: &mut dyn FnMut(&Progress),
+) -> bool {
+    if params.edge != Edge::FarField {
+        return true;
+    }
+    for _ in 0..EDGE_ROUNDS {
+        let (pressure, load) = mg.edge_drift(k);
+        if pressure < EDGE_SETTLED && load < OUTSIDE_LOAD_SETTLED {
+            return true;
+        }
+        let (residual, _) = mg.residual_norm(k);
+        let level = &mg.levels[k];
+        let film = friction::film(level, 1.0);
+        let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
+        let stop = warm::WarmStop {
+            outputs: [
+                film.h_central,
+                film.h_min,
+                mu.sliding,
+                mu.rolling.unwrap_or(0.0),
+            ],
+            residual,
+        };
+        mg.make_top(k);
+        if method == Method::Cycles {
+            let windows = StallWindows {
+                stall: params.stall_cycles,
+                early: 0,
+            };
+            let run = converge_by_cycles(mg, k, params, windows, Some(&stop), observe);
+            *cycles += run.history.len();
+            history.extend(&run.history);
+            if run.converged {
+                continue;
+            }
+            run.best.restore(mg, k);
+        }
+        *newton_used = true;
+        if params.newton_steps == 0
+            || !(work.add(&finish(mg, k, params, observe, history))
+                || polish_and_finish(mg, k, params, observe, history, work))
+        {
+            return false;
+        }
+    }
+    true
+}
+
+/// [`settle_edge`] on the top level, a failed reconvergence as the solve's error.
+pub(super) fn settle_top(
+    mg: &mut Hierarchy,
+    params: &Params,
+    (method, newton_used): (Method, &mut bool),
+    (cycles, history, work): (&mut usize, &mut Vec<f64>, &mut Work),
+    observe: &mut dyn FnMut(&Progress),
+) -> Result<(), SolveError> {
+    let k = mg.levels.len() - 1;
+    if settle_edge(
+        mg,
+        k,
+        params,
+        method,
+        newton_used,
+        cycles,
+        history,
+        work,
+        observe,
+    ) {
+        Ok(())
+    } else {
+        Err(SolveError::NotConverged {
+            cycles: *cycles,
+            tolerance: params.tolerance,
+            residual_history: history.clone(),
+        })
+    }
+}
+
+/// Most rounds of [`settle_edge`]: each changes the edge by the change of `Delta` that the
+/// last edge change caused, a small fraction of it, so one or two suffice.
+pub(super) const EDGE_ROUNDS: usize = 4;
+
+/// The largest change of an edge pressure, relative to the largest pressure, at which the
+/// edge counts as settled. Measured (levels 5 and 7): where the edge moved by 6e-5 of the
+/// largest pressure (the 5P4E case above) the sliding `mu-bar` moved by 0.8 %, about 130
+/// times as much; 1e-7 keeps that below a hundredth of the output tolerance. The Appendix
+/// case's edge moves by 9e-8 and is left alone; light cases take one round, rarely two.
+pub(super) const EDGE_SETTLED: f64 = 1e-7;
+
+/// The outside load's change, relative to the applied load, at which the edge counts as
+/// settled: a hundredth of the output tolerance, for the load the contact carries changes
+/// by as much and the film responds to it with a factor below one.
+pub(super) const OUTSIDE_LOAD_SETTLED: f64 = 5e-6;
