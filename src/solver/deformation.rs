@@ -12,7 +12,7 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 use std::f64::consts::PI;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// `int_0^x int_0^y dx dy / sqrt(x^2 + y^2)` for `x, y >= 0`:
 /// `x asinh(y/x) + y asinh(x/y)`.
@@ -96,18 +96,106 @@ pub struct Deformation {
     grid: Grid,
     n1: usize,
     n2: usize,
+    /// What depends on the mesh and the ellipse alone, shared ([`influence`]).
+    shared: Arc<Influence>,
+    /// Work space: one padded real row, one half-spectrum row, the column-major spectrum.
+    row: Vec<f64>,
+    half: Vec<Complex<f64>>,
+    cols: Vec<Complex<f64>>,
+    scratch: Vec<Complex<f64>>,
+}
+
+/// The part of a grid's deformation that depends only on its mesh (`nx`, `ny`, `hx`, `hy`)
+/// and the ellipse (`kappa`, `K`): the influence coefficients, their spectrum and the FFT
+/// plans. It is the same for every solve on that mesh (the cases of a family, and the
+/// circular contacts of a sweep on one domain), and making it (an `asinh` per coefficient,
+/// a transform, the plans) was 2-3 % of a sweep's time, so it is made once ([`influence`]).
+struct Influence {
+    kernel: Kernel,
     /// Kernel spectrum, column-major: `(kx, ky)` at `kx * n2 + ky`, `kx <= n1/2`.
     spectrum: Vec<Complex<f64>>,
     row_fwd: Arc<dyn RealToComplex<f64>>,
     row_inv: Arc<dyn ComplexToReal<f64>>,
     col_fwd: Arc<dyn Fft<f64>>,
     col_inv: Arc<dyn Fft<f64>>,
-    kernel: Kernel,
-    /// Work space: one padded real row, one half-spectrum row, the column-major spectrum.
-    row: Vec<f64>,
-    half: Vec<Complex<f64>>,
-    cols: Vec<Complex<f64>>,
-    scratch: Vec<Complex<f64>>,
+}
+
+/// The mesh and ellipse an [`Influence`] is made for, by their bits.
+type InfluenceKey = (usize, usize, u64, u64, u64, u64);
+
+/// Influences kept: the last few meshes (a family's levels 4-8 and its neighbours'; level 8
+/// holds about 10 MB).
+const INFLUENCES_KEPT: usize = 24;
+
+/// The [`Influence`] of `grid` for `kappa`, `ell_k`: made, or taken from the last ones made
+/// (the same bits either way: the same arithmetic on the same inputs).
+fn influence(grid: &Grid, kappa: f64, ell_k: f64) -> Arc<Influence> {
+    static MADE: Mutex<Vec<(InfluenceKey, Arc<Influence>)>> = Mutex::new(Vec::new());
+    let key = (
+        grid.nx,
+        grid.ny,
+        grid.hx.to_bits(),
+        grid.hy.to_bits(),
+        kappa.to_bits(),
+        ell_k.to_bits(),
+    );
+    let made = |m: &[(InfluenceKey, Arc<Influence>)]| {
+        m.iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, i)| Arc::clone(i))
+    };
+    if let Some(i) = made(&MADE.lock().unwrap_or_else(|e| e.into_inner())) {
+        return i;
+    }
+    let new = Arc::new(Influence::new(grid, kappa, ell_k));
+    let mut m = MADE.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(i) = made(&m) {
+        return i;
+    }
+    if m.len() >= INFLUENCES_KEPT {
+        m.remove(0);
+    }
+    m.push((key, Arc::clone(&new)));
+    new
+}
+
+impl Influence {
+    /// Plans the FFTs and transforms the kernel of `grid`.
+    fn new(grid: &Grid, kappa: f64, ell_k: f64) -> Self {
+        let kernel = Kernel::new(grid, kappa, ell_k);
+        let (n1, n2) = (2 * grid.nx, 2 * grid.ny);
+        let mut real_planner = RealFftPlanner::<f64>::new();
+        let mut planner = FftPlanner::new();
+        let mut i = Influence {
+            kernel,
+            spectrum: Vec::new(),
+            row_fwd: real_planner.plan_fft_forward(n1),
+            row_inv: real_planner.plan_fft_inverse(n1),
+            col_fwd: planner.plan_fft_forward(n2),
+            col_inv: planner.plan_fft_inverse(n2),
+        };
+        // The periodic kernel: offset k at index k, offset -k at index n - k.
+        let wrap = |k: usize, n: usize, m: usize| {
+            if k <= m {
+                k as isize
+            } else {
+                k as isize - n as isize
+            }
+        };
+        let mut image = vec![0.0; n1 * n2];
+        for l in 0..n2 {
+            for k in 0..n1 {
+                image[l * n1 + k] = i.kernel.at(wrap(k, n1, grid.nx), wrap(l, n2, grid.ny));
+            }
+        }
+        let mut d = Deformation::with(*grid, Arc::new(i));
+        d.forward(|l| Some(&image[l * n1..(l + 1) * n1]));
+        let norm = 1.0 / (n1 * n2) as f64;
+        let spectrum = d.cols.iter().map(|c| c * norm).collect();
+        i = Arc::into_inner(d.shared).expect("the influence is not shared yet");
+        i.spectrum = spectrum;
+        i
+    }
 }
 
 impl std::fmt::Debug for Deformation {
@@ -121,56 +209,35 @@ impl std::fmt::Debug for Deformation {
 }
 
 impl Deformation {
-    /// Plans the FFTs and transforms the kernel of `grid`.
+    /// The evaluator of `grid` for the ellipse `kappa`, `K` (its influence made once per
+    /// mesh, [`influence`]).
     pub fn new(grid: &Grid, kappa: f64, ell_k: f64) -> Self {
-        let kernel = Kernel::new(grid, kappa, ell_k);
+        Self::with(*grid, influence(grid, kappa, ell_k))
+    }
+
+    /// The evaluator of `grid` on `shared`, with its own work space.
+    fn with(grid: Grid, shared: Arc<Influence>) -> Self {
         let (n1, n2) = (2 * grid.nx, 2 * grid.ny);
-        let mut real_planner = RealFftPlanner::<f64>::new();
-        let mut planner = FftPlanner::new();
-        let col_fwd = planner.plan_fft_forward(n2);
-        let col_inv = planner.plan_fft_inverse(n2);
-        let scratch_len = col_fwd
+        let scratch_len = shared
+            .col_fwd
             .get_inplace_scratch_len()
-            .max(col_inv.get_inplace_scratch_len());
+            .max(shared.col_inv.get_inplace_scratch_len());
         let zero = Complex::new(0.0, 0.0);
-        let mut d = Deformation {
-            grid: *grid,
+        Deformation {
+            grid,
             n1,
             n2,
-            spectrum: Vec::new(),
-            row_fwd: real_planner.plan_fft_forward(n1),
-            row_inv: real_planner.plan_fft_inverse(n1),
-            col_fwd,
-            col_inv,
-            kernel,
+            shared,
             row: vec![0.0; n1],
             half: vec![zero; n1 / 2 + 1],
             cols: vec![zero; (n1 / 2 + 1) * n2],
             scratch: vec![zero; scratch_len],
-        };
-        // The periodic kernel: offset k at index k, offset -k at index n - k.
-        let wrap = |k: usize, n: usize, m: usize| {
-            if k <= m {
-                k as isize
-            } else {
-                k as isize - n as isize
-            }
-        };
-        let mut image = vec![0.0; n1 * n2];
-        for l in 0..n2 {
-            for k in 0..n1 {
-                image[l * n1 + k] = d.kernel.at(wrap(k, n1, grid.nx), wrap(l, n2, grid.ny));
-            }
         }
-        d.forward(|l| Some(&image[l * n1..(l + 1) * n1]));
-        let norm = 1.0 / (n1 * n2) as f64;
-        d.spectrum = d.cols.iter().map(|c| c * norm).collect();
-        d
     }
 
     /// The influence coefficients (for the relaxation's Jacobian).
     pub fn kernel(&self) -> &Kernel {
-        &self.kernel
+        &self.shared.kernel
     }
 
     /// The grid this evaluator serves.
@@ -188,7 +255,8 @@ impl Deformation {
             let Some(r) = row(l) else { continue };
             self.row.copy_from_slice(r);
             // Lengths match by construction; an error here is a programming defect.
-            self.row_fwd
+            self.shared
+                .row_fwd
                 .process(&mut self.row, &mut self.half)
                 .expect("row FFT lengths");
             for (kx, v) in self.half.iter().enumerate() {
@@ -196,7 +264,8 @@ impl Deformation {
             }
         }
         for kx in 0..h {
-            self.col_fwd
+            self.shared
+                .col_fwd
                 .process_with_scratch(&mut self.cols[kx * n2..(kx + 1) * n2], &mut self.scratch);
         }
     }
@@ -212,7 +281,8 @@ impl Deformation {
         for j in 1..g.ny {
             self.row.iter_mut().for_each(|v| *v = 0.0);
             self.row[1..g.nx].copy_from_slice(&p[g.idx(1, j)..g.idx(g.nx, j)]);
-            self.row_fwd
+            self.shared
+                .row_fwd
                 .process(&mut self.row, &mut self.half)
                 .expect("row FFT lengths");
             for (kx, v) in self.half.iter().enumerate() {
@@ -221,11 +291,15 @@ impl Deformation {
         }
         for kx in 0..h {
             let col = &mut self.cols[kx * n2..(kx + 1) * n2];
-            self.col_fwd.process_with_scratch(col, &mut self.scratch);
+            self.shared
+                .col_fwd
+                .process_with_scratch(col, &mut self.scratch);
             col.iter_mut()
-                .zip(&self.spectrum[kx * n2..(kx + 1) * n2])
+                .zip(&self.shared.spectrum[kx * n2..(kx + 1) * n2])
                 .for_each(|(c, s)| *c *= s);
-            self.col_inv.process_with_scratch(col, &mut self.scratch);
+            self.shared
+                .col_inv
+                .process_with_scratch(col, &mut self.scratch);
         }
         for j in 0..g.py() {
             for kx in 0..h {
@@ -235,7 +309,8 @@ impl Deformation {
             // terms, which are round-off here.
             self.half[0].im = 0.0;
             self.half[h - 1].im = 0.0;
-            self.row_inv
+            self.shared
+                .row_inv
                 .process(&mut self.half, &mut self.row)
                 .expect("row FFT lengths");
             w[g.idx(0, j)..=g.idx(g.nx, j)].copy_from_slice(&self.row[..=g.nx]);
