@@ -44,7 +44,7 @@ use std::time::Instant;
 
 /// Revision of the line-contact numerics: part of every line-contact cache key, bumped
 /// whenever a change can move a result.
-pub const SOLVER_REVISION: &str = "line-2";
+pub const SOLVER_REVISION: &str = "line-3";
 
 /// Highest level the solver accepts (8192 intervals: a dense Jacobian of 0.5 GB).
 pub const MAX_LEVEL: u32 = 12;
