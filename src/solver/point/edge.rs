@@ -1,7 +1,11 @@
 //! The far field's self-consistency: the edge put anew for the converged film constant and
 //! the solve converged again until the edge settles.
 
-use super::*;
+use super::cycles::{converge_by_cycles, StallWindows};
+use super::finish::{finish, polish_and_finish, Work};
+use super::multigrid::Hierarchy;
+use super::{friction, warm, Edge, Params};
+use crate::solver::output::{Method, Progress, SolveError};
 
 /// Rounds of the far field's self-consistency on level `k` (the top, converged by
 /// `method`). The edge takes the asymptote for the film constant of the moment its level
@@ -103,16 +107,16 @@ pub(super) fn settle_top(
 
 /// Most rounds of [`settle_edge`]: each changes the edge by the change of `Delta` that the
 /// last edge change caused, a small fraction of it, so one or two suffice.
-pub(super) const EDGE_ROUNDS: usize = 4;
+const EDGE_ROUNDS: usize = 4;
 
 /// The largest change of an edge pressure, relative to the largest pressure, at which the
 /// edge counts as settled. Measured (levels 5 and 7): where the edge moved by 6e-5 of the
 /// largest pressure (the 5P4E case above) the sliding `mu-bar` moved by 0.8 %, about 130
 /// times as much; 1e-7 keeps that below a hundredth of the output tolerance. The Appendix
 /// case's edge moves by 9e-8 and is left alone; light cases take one round, rarely two.
-pub(super) const EDGE_SETTLED: f64 = 1e-7;
+const EDGE_SETTLED: f64 = 1e-7;
 
 /// The outside load's change, relative to the applied load, at which the edge counts as
 /// settled: a hundredth of the output tolerance, for the load the contact carries changes
 /// by as much and the film responds to it with a factor below one.
-pub(super) const OUTSIDE_LOAD_SETTLED: f64 = 5e-6;
+const OUTSIDE_LOAD_SETTLED: f64 = 5e-6;

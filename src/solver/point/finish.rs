@@ -1,7 +1,12 @@
 //! The Newton-Krylov finish: on the top level directly, grid-sequenced from a coarser one,
 //! or after the cycles relaxed a stalled state; the far field refitted between solves.
 
-use super::*;
+use super::cycles::{
+    converge_by_cycles, edge_outputs, level_number, outputs_settled, StallWindows, State,
+};
+use super::multigrid::Hierarchy;
+use super::{level, newton, Edge, Params, FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
+use crate::solver::output::{mean_change, Progress, Step};
 
 /// The Newton-Krylov finish on level `k` (the top of the hierarchy) from its current
 /// state; each step is reported and its residual appended to `history`.
@@ -39,25 +44,8 @@ pub(super) fn finish(
     outcome
 }
 
-/// The outputs a far field's refits are judged by: central and minimum film and sliding
-/// friction of level `k`.
-pub(super) fn edge_outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 3] {
-    let level = &mg.levels[k];
-    let film = friction::film(level, 1.0);
-    let mu = friction::friction(level, &mg.model, None, params.friction_region);
-    [film.h_central, film.h_min, mu.sliding]
-}
-
-/// Whether every output moved by less than [`FAR_FIELD_OUTPUTS_SETTLED`], relative.
-pub(super) fn outputs_settled(before: &[f64; 3], after: &[f64; 3]) -> bool {
-    before
-        .iter()
-        .zip(after)
-        .all(|(b, a)| (a - b).abs() <= FAR_FIELD_OUTPUTS_SETTLED * a.abs())
-}
-
 /// One Newton-Krylov solve on level `k` with its edge as it stands.
-pub(super) fn newton_solve(
+fn newton_solve(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
@@ -204,11 +192,4 @@ impl Work {
 
 /// GMRES vectors kept before a restart: more than the preconditioned systems need (the
 /// feasibility study: 20 iterations to 1e-6 at level 7), so restarts are rare.
-pub(super) const KRYLOV_RESTART: usize = 60;
-
-/// A fitted far field also counts as settled when the last refit moved the outputs (central and minimum film, sliding
-/// friction) by less than this, relative: a tenth of the solver's output tolerance
-/// ([`stopping::OUTPUT_TOLERANCE`]), so that with the refits' measured contraction (about
-/// 0.9 per round where the fit ring is slaved to the edge: M 20, L 30 at level 7 drifts
-/// 1e-5 per round) the drift left is below that tolerance.
-pub(super) const FAR_FIELD_OUTPUTS_SETTLED: f64 = 5e-5;
+const KRYLOV_RESTART: usize = 60;

@@ -30,13 +30,11 @@ mod warm;
 use crate::physics::case::Problem;
 use crate::physics::film::{hc_eq10, hc_nijenbanning};
 use crate::solver::grid::Grid;
-use crate::solver::output::{
-    mean_change, Film, Friction, Info, Method, Progress, SolveError, StartKind, Step,
-};
-use cycles::*;
-use edge::*;
+use crate::solver::output::{Film, Friction, Info, Method, Progress, SolveError, StartKind};
+use cycles::{converge_by_cycles, cycle_progress, level_number, StallWindows, State};
+use edge::settle_top;
 use far_field::FarField;
-use finish::*;
+use finish::{finish, grid_sequence, Work};
 pub use friction::{FrictionRegion, LOADED_FILM_FACTOR};
 use level::Model;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).

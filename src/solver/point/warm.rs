@@ -17,10 +17,9 @@
 //! where it no longer falls (a warm start begins near its fixed point; without it the
 //! heaviest members, M 11 070, took a Newton-Krylov detour and were slower than cold).
 
-use super::{
-    converge_by_cycles, finish, friction, hierarchy, polish_and_finish, Converged, Hierarchy,
-    Params, StallWindows, State, Work, MAX_LEVEL,
-};
+use super::cycles::{converge_by_cycles, StallWindows, State};
+use super::finish::{finish, polish_and_finish, Work};
+use super::{friction, hierarchy, Converged, Hierarchy, Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{Method, Progress, StartKind};
