@@ -23,7 +23,11 @@
 //! stream through: at level 8 a factorisation took 3.0 s and a solve 80 ms in double
 //! precision, 2.1 s and 50 ms in single. GMRES is the flexible form, which does not need
 //! the rounded solves to be exactly linear ([`super::gmres`]).
+//! Its factorisation and solves run with flush-to-zero: the factor's fill decays through
+//! `f32`'s subnormal range, which costs an Intel core a microcode assist per operand
+//! ([`super::subnormal`]).
 
+use super::subnormal::{self, FlushToZero};
 use faer::dyn_stack::{MemStack, StackReq};
 use faer::perm::PermRef;
 use faer::sparse::linalg::lu::supernodal::{
@@ -190,6 +194,8 @@ impl BorderedLu {
         if entries.iter().any(|e| !e.val.is_finite()) {
             return None;
         }
+        // The entries narrowed and factorised with flush-to-zero ([`subnormal`]).
+        let ftz = FlushToZero::new();
         let narrow: Vec<Triplet<usize, usize, Factor>> = entries
             .iter()
             .map(|e| Triplet::new(e.row, e.col, e.val as Factor))
@@ -239,6 +245,8 @@ impl BorderedLu {
             Default::default(),
         )
         .ok()?;
+        drop(ftz);
+        subnormal::record_factor(&numeric);
         let mut out = BorderedLu {
             numeric,
             col_perm: (fwd, inv),
@@ -273,6 +281,8 @@ impl BorderedLu {
         let par = faer::get_global_parallelism();
         let req = solve_in_place_scratch::<usize, Factor>(n, 1, par);
         let storage = &mut self.storage;
+        // Narrowed, solved and widened with flush-to-zero ([`subnormal`]).
+        let _ftz = FlushToZero::new();
         let rhs = &mut storage.rhs;
         rhs.clear();
         rhs.extend(b.iter().map(|&v| v as Factor));
@@ -294,6 +304,7 @@ impl BorderedLu {
     /// row's) into `out`.
     pub fn solve(&mut self, rhs: &[f64], out: &mut [f64]) {
         let n = self.w.len();
+        subnormal::record_vector(rhs);
         self.solve_block(&rhs[..n], &mut out[..n]);
         // A y = b; then xd = (bd - w^T y) / schur, x = y - A^-1 u xd.
         let wy: f64 = self.w.iter().zip(&out[..n]).map(|(a, b)| a * b).sum();
@@ -302,6 +313,7 @@ impl BorderedLu {
             out[i] -= self.a_inv_u[i] * xd;
         }
         out[n] = xd;
+        subnormal::record_vector(out);
     }
 }
 
