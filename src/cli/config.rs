@@ -2,7 +2,7 @@
 //! problem, the pipeline's [`Context`]. Every error names the flag.
 
 use super::args::{
-    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, RheologyArg, SolveArgs, TargetArgs,
+    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, RheologyArg, SolveArgs, TargetArgs,
     ViscosityArg,
 };
 use anyhow::{anyhow, bail, Result};
@@ -227,8 +227,8 @@ impl SolveArgs {
 
     /// Point-solver parameters for `problem`: the rule every command uses
     /// ([`point::Params::for_problem`]) at `--level`, with the numerics flags on top
-    /// (`--domain auto` keeps the rule's domain; `paper`, `wide`, `heavy` are expert
-    /// overrides).
+    /// (`--domain auto` and `--edge auto` keep the rule's domain and edge; the others are
+    /// expert overrides).
     pub fn params(&self, problem: &Problem) -> Result<point::Params> {
         let rule =
             point::Params::for_problem(problem, check_level("--level", self.level.unwrap_or(7))?);
@@ -238,6 +238,11 @@ impl SolveArgs {
                 DomainArg::Paper => Domain::default(),
                 DomainArg::Wide => Domain::wide(),
                 DomainArg::Heavy => Domain::heavy(),
+            },
+            edge: match self.edge {
+                EdgeArg::Auto => rule.edge,
+                EdgeArg::Zero => point::Edge::Zero,
+                EdgeArg::FarField => point::Edge::FarField,
             },
             max_cycles: self.max_cycles,
             newton_steps: self.newton_steps,
@@ -299,6 +304,9 @@ impl SolveArgs {
         }
         if !matches!(self.domain, DomainArg::Auto) {
             bail!("--domain: the line contact has its own domain (-4.5 <= X <= 1.5); drop --domain with --line");
+        }
+        if !matches!(self.edge, EdgeArg::Auto) {
+            bail!("--edge: the line contact has its own edge (P = 0); drop --edge with --line");
         }
         Ok(())
     }

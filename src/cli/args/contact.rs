@@ -42,6 +42,18 @@ pub enum DomainArg {
     Heavy,
 }
 
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum EdgeArg {
+    /// The case's edge by the rule every command and target uses: the flooded inlet's far
+    /// field.
+    Auto,
+    /// P = 0 on the domain's edge, the paper's (and most EHL codes'): compare like with like
+    /// with such a code, on its domain (--domain).
+    Zero,
+    /// The flooded inlet's far field, its amplitude fixed a priori from lambda (the rule's).
+    FarField,
+}
+
 #[derive(Debug, Args)]
 #[command(allow_negative_numbers = true)]
 pub struct SolveArgs {
@@ -136,6 +148,9 @@ pub struct SolveArgs {
     /// Computational domain.
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub domain: DomainArg,
+    /// The condition on the domain's edge (an expert override, like --domain).
+    #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
+    pub edge: EdgeArg,
     /// Most multigrid cycles on the finest level.
     #[arg(long = "max-cycles", default_value_t = Params::default().max_cycles, help_heading = "Numerics")]
     pub max_cycles: usize,

@@ -7,7 +7,7 @@ mod contact;
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 pub use contact::{
-    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, PredictArgs, RheologyArg, SolveArgs,
+    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, PredictArgs, RheologyArg, SolveArgs,
     ThermalArgs, ViscosityArg,
 };
 use repro::paper::{find, Artefact, REGISTRY};
