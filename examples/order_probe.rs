@@ -20,8 +20,10 @@
 //! the largest change over the loaded film of the deformation the boundary nodes' pressure
 //! would add (the FFT leaves them out), and the loaded film's sliding friction split into
 //! `mu_cont`, the stress less its value at `P = 0` (continuous across the cavitation
-//! boundary), and `mu_step`, that value (a step there); the largest pressure and where. `PROBE_OUTTOL` sets the output
-//! tolerance, `PROBE_TOL` the residual tolerance (`Params::tolerance`).
+//! boundary), and `mu_step`, that value (a step there); the largest pressure and where;
+//! `dlneta`, the largest change of `ln(eta)` between neighbouring nodes. `PROBE_OUTTOL` sets the output
+//! tolerance, `PROBE_TOL` the residual tolerance (`Params::tolerance`); `PROBE_NEWTONIAN`
+//! takes a Newtonian fluid instead of Eyring.
 use repro::physics::case::*;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::deformation::Kernel;
@@ -66,6 +68,11 @@ fn main() {
             physics: Physics::default(),
         }
     };
+    // PROBE_NEWTONIAN=1 takes a Newtonian fluid instead of Eyring (the film's study only).
+    let mut case = case;
+    if std::env::var_os("PROBE_NEWTONIAN").is_some() {
+        case.physics.rheology = repro::physics::rheology::Rheology::Newtonian;
+    }
     let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
     let rule = Domain::for_problem(&problem);
     let (domain, edge) = match a[2].as_str() {
@@ -147,13 +154,26 @@ fn main() {
         let per_load = gr.hx * gr.hy / (2.0 * std::f64::consts::PI / 3.0);
         let (mu_all, mu_cont, mu_step) = (all * per_load, cont * per_load, step * per_load);
         let (lin, quad, frac) = centre(&gr, &s.h);
+        // How well the grid resolves the viscosity's exponential scale: the largest change
+        // of ln(eta) between neighbouring nodes along X and along Y.
+        let (mut jump, mut jump_at) = (0.0, (0.0, 0.0));
+        for j in 0..gr.ny {
+            for i in 0..gr.nx {
+                let k = gr.idx(i, j);
+                let l = |k: usize| problem.viscosity.ln_eta_bar(s.p[k].max(0.0));
+                let d = (l(k + 1) - l(k)).abs().max((l(k + gr.px()) - l(k)).abs());
+                if d > jump {
+                    (jump, jump_at) = (d, (gr.x(i), gr.y(j)));
+                }
+            }
+        }
         // The pressure spike: the largest pressure and where it is.
         let kmax = (0..gr.len()).fold(0, |a, k| if s.p[k] > s.p[a] { k } else { a });
         let spike = (s.p[kmax], gr.x(kmax % gr.px()), gr.y(kmax / gr.px()));
         let edge_w = edge_deformation(&gr, &problem, &s.p, &s.h, s.film.h_central);
         println!(
             "level {level} ({}x{}, hx {:.5}): Hc {:.6} Hmin {:.6} (Moes) mu {:.6} mu_all {:.6} \
-             mu_cont {mu_cont:.6} mu_step {mu_step:.6} Pmax {:.5} at ({:.4}, {:.4}) \
+             mu_cont {mu_cont:.6} mu_step {mu_step:.6} Pmax {:.5} at ({:.4}, {:.4}) dlneta {jump:.3} at ({:.3}, {:.3}) \
              | Delta {:.6} t {frac:.3} Hc lin {lin:.6} quad {quad:.6} edgeW {edge_w:.2e} \
              | {:?} cycles {} newton {} res {:.1e} | {secs:.1} s",
             gr.nx,
@@ -166,6 +186,8 @@ fn main() {
             spike.0,
             spike.1,
             spike.2,
+            jump_at.0,
+            jump_at.1,
             s.delta,
             s.info.method,
             s.info.cycles,
