@@ -144,6 +144,14 @@ pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
 ///   Table 4's: a level whose minimum film is not positive fails, as it does in a figure
 ///   (Table 4 itself reports its level-5 row anyway);
 /// - `ellipse-1/5`: Rx/Ry = 1/5 at 3 GPa, 60 C (Table 3, `cases/fig7.toml`), for fig7;
+/// - `light-far-field`: Fig. 6 case 23 (5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa; M 4.76,
+///   L 57), the light, piezoviscous end of the Table 2 grid on its wide domain with the far
+///   field, whose film and friction converge at order 1.1-1.4 (docs/ACCURACY_NOTES.md), for
+///   fig4-fig6;
+/// - `m1-l10`: M 1, L 10, S-bar 0.1 (Barus, incompressible, Eyring), the light end of the
+///   envelope a study can reach (no figure has it: it stands for no target);
+/// - `heavy-m19205`: Fig. 4 case 221 (mineral oil A, 100 C, 3 GPa, 2 m/s, S 0.5 %, tau0 6 MPa;
+///   M 19 205), the heaviest load of Table 2, whose film closes below level 8, for fig4;
 /// - `line` (with `with_line`): the line contact of Table 3 at 3 GPa, 40 C, for fig7, two
 ///   levels finer than the point contacts (the dense Newton solve of the 1-D solver is
 ///   O(n^3): level 10 takes about 1.5 s, level 11 7 s).
@@ -189,6 +197,40 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
         })
         .cloned()
         .ok_or("cases/fig7.toml: no Rx/Ry = 1/5 case at 3 GPa, 60 C")?;
+    // A case of a shipped Table 2 sweep by its lubricant and operating point.
+    let table2_case = |sweep: &str,
+                       lubricant: &str,
+                       t: f64,
+                       ph: f64,
+                       um: f64,
+                       slip: f64,
+                       tau0: f64| {
+        let cases = shipped_sweep(sweep).map_err(|e| e.to_string())?.cases;
+        cases
+            .into_iter()
+            .find(|c| match &c.spec {
+                CaseForm::Physical(p) => {
+                    matches!(&p.lubricant, LubricantSpec::Named { lubricant: l, temperature_c } if l == lubricant && (*temperature_c - t).abs() < 1e-9)
+                        && (p.ph_pa - ph).abs() < 1.0
+                        && (p.um_m_s - um).abs() < 1e-9
+                        && (p.slip - slip).abs() < 1e-12
+                        && (p.tau0_pa - tau0).abs() < 1e-3
+                }
+                CaseForm::Dimensionless(_) => false,
+            })
+            .ok_or_else(|| format!("cases/{sweep}.toml: no {lubricant} case at {t} C, {ph} Pa, {um} m/s, S {slip}, tau0 {tau0} Pa"))
+    };
+    let case23 = table2_case("fig6", "5p4e", 40.0, 1e9, 12.0, 0.005, 6e6)?;
+    let case221 = table2_case("fig4", "mineral-oil-a", 100.0, 3e9, 2.0, 0.005, 6e6)?;
+    let m1 = PointSpec {
+        m: Some(1.0),
+        l: Some(10.0),
+        s_bar: Some(0.1),
+        tau0_hat: Some(2.0),
+        ..PointSpec::default()
+    }
+    .to_case("accuracy", light.physics)
+    .map_err(|e| e.to_string())?;
     let point = |case: &crate::physics::case::Case,
                  params: fn(&Problem, u32) -> point::Params|
      -> Result<AccuracyProblem, String> {
@@ -225,6 +267,27 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
             targets: &["fig7"],
             level_offset: 0,
             contact: point(&ellipse, pipeline_params)?,
+        },
+        AccuracyCase {
+            name: "light-far-field",
+            description: "Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa (M 4.76, L 57, far field)",
+            targets: &["fig4", "fig5", "fig6"],
+            level_offset: 0,
+            contact: point(&case23, pipeline_params)?,
+        },
+        AccuracyCase {
+            name: "m1-l10",
+            description: "M 1, L 10, S-bar 0.1, Barus, incompressible, Eyring (the light end of the envelope)",
+            targets: &[],
+            level_offset: 0,
+            contact: point(&m1, pipeline_params)?,
+        },
+        AccuracyCase {
+            name: "heavy-m19205",
+            description: "Fig. 4 case 221: mineral oil A, 100 C, 3 GPa, 2 m/s, S 0.5 %, tau0 6 MPa (M 19 205)",
+            targets: &["fig4"],
+            level_offset: 0,
+            contact: point(&case221, pipeline_params)?,
         },
     ];
     if with_line {

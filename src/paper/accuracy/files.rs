@@ -21,6 +21,8 @@ struct LevelRow<'a> {
     mu_bar_error: Option<f64>,
     observed_order_h: Option<f64>,
     observed_order_mu: Option<f64>,
+    order_used_h: Option<f64>,
+    order_used_mu: Option<f64>,
     /// Finest-level cycles, or the length of a failure's residual history.
     cycles: usize,
     seconds: Decimals<3>,
@@ -38,6 +40,7 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
         let domain_seconds = s.domain.as_ref().map(|d| Decimals(d.seconds));
         let r = s.reference;
         let order = r.and_then(|r| r.order);
+        let used = r.and_then(|r| r.order_used);
         for (run, points) in s.levels.iter().zip(&s.points) {
             let e = s.errors(run);
             let row = LevelRow {
@@ -52,6 +55,8 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
                 mu_bar_error: e.map(|e| e.1),
                 observed_order_h: order.map(|o| o.0),
                 observed_order_mu: order.map(|o| o.1),
+                order_used_h: used.map(|o| o.0),
+                order_used_mu: used.map(|o| o.1),
                 seconds: Decimals(run.seconds),
                 domain_h_central_change: domain.map(|d| d.0),
                 domain_mu_bar_change: domain.map(|d| d.1),
@@ -121,6 +126,9 @@ pub fn to_text(studies: &[AccuracyResult], recs: &[Recommendation]) -> String {
                 r.order
                     .map(|o| format!(", observed order Hc {:.2}, mu-bar {:.2}", o.0, o.1))
                     .unwrap_or_default()
+                    + &r.order_used
+                        .map(|o| format!(", extrapolated at order {:.2} and {:.2}", o.0, o.1))
+                        .unwrap_or_default()
             ));
         }
         out.push_str("  level  Hc           mu-bar     err Hc    err mu-bar  cycles  time (s)\n");
