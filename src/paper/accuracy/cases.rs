@@ -4,7 +4,7 @@
 use crate::paper::cases::shipped_sweep;
 use crate::paper::figures::line::table3_line_cases;
 use crate::paper::table4::Table4Case;
-use crate::physics::case::{CaseForm, LubricantSpec, Physics, Problem};
+use crate::physics::case::{Case, CaseForm, LubricantSpec, Physics, Problem};
 use crate::physics::density::DensityLaw;
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
@@ -231,65 +231,31 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
     }
     .to_case("accuracy", light.physics)
     .map_err(|e| e.to_string())?;
-    let point = |case: &crate::physics::case::Case,
-                 params: fn(&Problem, u32) -> point::Params|
-     -> Result<AccuracyProblem, String> {
-        Ok(AccuracyProblem::Point {
-            problem: Box::new(Problem::from_case(case, &lubs).map_err(|e| e.to_string())?),
-            params,
-        })
-    };
-    let mut cases = vec![
-        AccuracyCase {
-            name: "light-barus",
-            description: "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)",
-            targets: &["fig1", "fig2", "fig3"],
-            level_offset: 0,
-            contact: point(&light, pipeline_params)?,
-        },
-        AccuracyCase {
-            name: "heavy-barus",
-            description: "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)",
-            targets: &["fig1", "fig2", "fig3"],
-            level_offset: 0,
-            contact: point(&heavy, pipeline_params)?,
-        },
-        AccuracyCase {
-            name: "table4",
-            description: "Appendix case: mineral oil A, 3 GPa, 40 C, Roelands, Dowson-Higginson, Eyring",
-            targets: &["fig4", "fig5", "fig6"],
-            level_offset: 0,
-            contact: point(&table4, pipeline_params)?,
-        },
-        AccuracyCase {
-            name: "ellipse-1/5",
-            description: "Rx/Ry = 1/5, mineral oil A, 3 GPa, 60 C, 12 m/s, S 0.1 %, tau0 4 MPa (Table 3)",
-            targets: &["fig7"],
-            level_offset: 0,
-            contact: point(&ellipse, pipeline_params)?,
-        },
-        AccuracyCase {
-            name: "light-far-field",
-            description: "Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa (M 4.76, L 57, far field)",
-            targets: &["fig4", "fig5", "fig6"],
-            level_offset: 0,
-            contact: point(&case23, pipeline_params)?,
-        },
-        AccuracyCase {
-            name: "m1-l10",
-            description: "M 1, L 10, S-bar 0.1, Barus, incompressible, Eyring (the light end of the envelope)",
-            targets: &[],
-            level_offset: 0,
-            contact: point(&m1, pipeline_params)?,
-        },
-        AccuracyCase {
-            name: "heavy-m19205",
-            description: "Fig. 4 case 221: mineral oil A, 100 C, 3 GPa, 2 m/s, S 0.5 %, tau0 6 MPa (M 19 205)",
-            targets: &["fig4"],
-            level_offset: 0,
-            contact: point(&case221, pipeline_params)?,
-        },
+    // (name, description, targets, case): every point contact with the figures' parameters.
+    let points: [(&'static str, &'static str, &'static [&'static str], &Case); 7] = [
+        ("light-barus", "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)", &["fig1", "fig2", "fig3"], &light),
+        ("heavy-barus", "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)", &["fig1", "fig2", "fig3"], &heavy),
+        ("table4", "Appendix case: mineral oil A, 3 GPa, 40 C, Roelands, Dowson-Higginson, Eyring", &["fig4", "fig5", "fig6"], &table4),
+        ("ellipse-1/5", "Rx/Ry = 1/5, mineral oil A, 3 GPa, 60 C, 12 m/s, S 0.1 %, tau0 4 MPa (Table 3)", &["fig7"], &ellipse),
+        ("light-far-field", "Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa (M 4.76, L 57, far field)", &["fig4", "fig5", "fig6"], &case23),
+        ("m1-l10", "M 1, L 10, S-bar 0.1, Barus, incompressible, Eyring (the light end of the envelope)", &[], &m1),
+        ("heavy-m19205", "Fig. 4 case 221: mineral oil A, 100 C, 3 GPa, 2 m/s, S 0.5 %, tau0 6 MPa (M 19 205)", &["fig4"], &case221),
     ];
+    let mut cases = points
+        .into_iter()
+        .map(|(name, description, targets, case)| {
+            Ok(AccuracyCase {
+                name,
+                description,
+                targets,
+                level_offset: 0,
+                contact: AccuracyProblem::Point {
+                    problem: Box::new(Problem::from_case(case, &lubs).map_err(|e| e.to_string())?),
+                    params: pipeline_params,
+                },
+            })
+        })
+        .collect::<Result<Vec<_>, String>>()?;
     if with_line {
         // The heaviest line contact of Table 3 (3 GPa), from cases/fig7.toml.
         let (lines, physics) = table3_line_cases()?;
