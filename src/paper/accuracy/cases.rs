@@ -4,7 +4,7 @@
 use crate::paper::cases::shipped_sweep;
 use crate::paper::figures::line::table3_line_cases;
 use crate::paper::table4::Table4Case;
-use crate::physics::case::{Case, CaseForm, LubricantSpec, Physics, Problem};
+use crate::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use crate::physics::density::DensityLaw;
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
@@ -133,6 +133,21 @@ pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
     }
 }
 
+/// The first physical case of the shipped sweep `sweep` that `matches`; `what` names it in
+/// the error when there is none.
+fn shipped_physical_case(
+    sweep: &str,
+    what: &str,
+    matches: impl Fn(&PhysicalCase) -> bool,
+) -> Result<Case, String> {
+    shipped_sweep(sweep)
+        .map_err(|e| e.to_string())?
+        .cases
+        .into_iter()
+        .find(|c| matches!(&c.spec, CaseForm::Physical(p) if matches(p)))
+        .ok_or_else(|| format!("cases/{sweep}.toml: no {what}"))
+}
+
 /// The representative cases, cheapest first:
 ///
 /// - `light-barus`: the lightest load of the Figs. 1-3 sweep (M 50, L 10, S-bar 0.1,
@@ -157,46 +172,34 @@ pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
 ///   O(n^3): level 10 takes about 1.5 s, level 11 7 s).
 pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
     let lubs = LubricantTable::table1();
-    let light = PointSpec {
-        m: Some(50.0),
-        l: Some(10.0),
-        s_bar: Some(0.1),
-        tau0_hat: Some(2.0),
-        ..PointSpec::default()
-    }
-    .to_case(
-        "accuracy",
-        Physics {
-            viscosity: ViscosityLaw::Barus,
-            density: DensityLaw::Incompressible,
-            rheology: Rheology::Eyring,
-        },
-    )
-    .map_err(|e| e.to_string())?;
-    let heavy = PointSpec {
-        m: Some(1000.0),
-        l: Some(15.0),
-        s_bar: Some(0.1),
-        tau0_hat: Some(2.0),
-        ..PointSpec::default()
-    }
-    .to_case("accuracy", light.physics)
-    .map_err(|e| e.to_string())?;
+    // A dimensionless case of the Figs. 1-3 kind (S-bar 0.1, Barus, incompressible, Eyring).
+    let barus = |m: f64, l: f64| {
+        PointSpec {
+            m: Some(m),
+            l: Some(l),
+            s_bar: Some(0.1),
+            tau0_hat: Some(2.0),
+            ..PointSpec::default()
+        }
+        .to_case(
+            "accuracy",
+            Physics {
+                viscosity: ViscosityLaw::Barus,
+                density: DensityLaw::Incompressible,
+                rheology: Rheology::Eyring,
+            },
+        )
+        .map_err(|e| e.to_string())
+    };
+    let light = barus(50.0, 10.0)?;
+    let heavy = barus(1000.0, 15.0)?;
+    let m1 = barus(1.0, 10.0)?;
     let table4 = Table4Case::shipped()?.case;
-    let fig7 = shipped_sweep("fig7").map_err(|e| e.to_string())?;
-    let ellipse = fig7
-        .cases
-        .iter()
-        .find(|c| match &c.spec {
-            CaseForm::Physical(p) => {
-                (p.rx_m / p.ry_m - 0.2).abs() < 1e-9
-                    && (p.ph_pa - 3e9).abs() < 1.0
-                    && matches!(&p.lubricant, LubricantSpec::Named { temperature_c, .. } if (*temperature_c - 60.0).abs() < 1e-9)
-            }
-            CaseForm::Dimensionless(_) => false,
-        })
-        .cloned()
-        .ok_or("cases/fig7.toml: no Rx/Ry = 1/5 case at 3 GPa, 60 C")?;
+    let ellipse = shipped_physical_case("fig7", "Rx/Ry = 1/5 case at 3 GPa, 60 C", |p| {
+        (p.rx_m / p.ry_m - 0.2).abs() < 1e-9
+            && (p.ph_pa - 3e9).abs() < 1.0
+            && matches!(&p.lubricant, LubricantSpec::Named { temperature_c, .. } if (*temperature_c - 60.0).abs() < 1e-9)
+    })?;
     // A case of a shipped Table 2 sweep by its lubricant and operating point.
     let table2_case = |sweep: &str,
                        lubricant: &str,
@@ -205,32 +208,18 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
                        um: f64,
                        slip: f64,
                        tau0: f64| {
-        let cases = shipped_sweep(sweep).map_err(|e| e.to_string())?.cases;
-        cases
-            .into_iter()
-            .find(|c| match &c.spec {
-                CaseForm::Physical(p) => {
-                    matches!(&p.lubricant, LubricantSpec::Named { lubricant: l, temperature_c } if l == lubricant && (*temperature_c - t).abs() < 1e-9)
-                        && (p.ph_pa - ph).abs() < 1.0
-                        && (p.um_m_s - um).abs() < 1e-9
-                        && (p.slip - slip).abs() < 1e-12
-                        && (p.tau0_pa - tau0).abs() < 1e-3
-                }
-                CaseForm::Dimensionless(_) => false,
-            })
-            .ok_or_else(|| format!("cases/{sweep}.toml: no {lubricant} case at {t} C, {ph} Pa, {um} m/s, S {slip}, tau0 {tau0} Pa"))
+        let what =
+            format!("{lubricant} case at {t} C, {ph} Pa, {um} m/s, S {slip}, tau0 {tau0} Pa");
+        shipped_physical_case(sweep, &what, |p| {
+            matches!(&p.lubricant, LubricantSpec::Named { lubricant: l, temperature_c } if l == lubricant && (*temperature_c - t).abs() < 1e-9)
+                && (p.ph_pa - ph).abs() < 1.0
+                && (p.um_m_s - um).abs() < 1e-9
+                && (p.slip - slip).abs() < 1e-12
+                && (p.tau0_pa - tau0).abs() < 1e-3
+        })
     };
     let case23 = table2_case("fig6", "5p4e", 40.0, 1e9, 12.0, 0.005, 6e6)?;
     let case221 = table2_case("fig4", "mineral-oil-a", 100.0, 3e9, 2.0, 0.005, 6e6)?;
-    let m1 = PointSpec {
-        m: Some(1.0),
-        l: Some(10.0),
-        s_bar: Some(0.1),
-        tau0_hat: Some(2.0),
-        ..PointSpec::default()
-    }
-    .to_case("accuracy", light.physics)
-    .map_err(|e| e.to_string())?;
     // (name, description, targets, case): every point contact with the figures' parameters.
     let points: [(&'static str, &'static str, &'static [&'static str], &Case); 7] = [
         ("light-barus", "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)", &["fig1", "fig2", "fig3"], &light),
