@@ -12,6 +12,28 @@ pub(super) fn to_plot(scale: Scale, v: f64) -> Option<f64> {
     }
 }
 
+/// The vertical error bar of a plottable value `y` with half-width `e`, as the plotted
+/// coordinates (low, high) of y - e and y + e; `None` (no bar) unless `e` is finite and
+/// positive. On a log axis a low end y - e <= 0 has no plotted coordinate: it is -inf, to be
+/// cut at the axis, as is an end that overflows to an infinity.
+pub(super) fn error_bar(scale: Scale, y: f64, e: f64) -> Option<(f64, f64)> {
+    if !(e.is_finite() && e > 0.0) {
+        return None;
+    }
+    let (low, high) = (y - e, y + e);
+    match scale {
+        Scale::Linear => Some((low, high)),
+        Scale::Log => {
+            let low = if low > 0.0 {
+                low.log10()
+            } else {
+                f64::NEG_INFINITY
+            };
+            Some((low, high.log10()))
+        }
+    }
+}
+
 /// One axis in plotted coordinates: range, labelled ticks and unlabelled grid lines.
 #[derive(Debug, Clone, PartialEq)]
 pub(super) struct AxisPlan {

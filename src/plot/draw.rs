@@ -1,10 +1,10 @@
 //! Rendering: a [`Figure`] through plotters' SVG backend into a string, then the text markup
 //! applied.
 
-use super::axes::{plan_axis, to_plot, AxisPlan};
+use super::axes::{error_bar, plan_axis, to_plot, AxisPlan};
 use super::layout::{visible_pieces, Corner, Rect};
 use super::legend::{draw_legend, draw_notes, LegendRow, LegendSample};
-use super::marker::Glyph;
+use super::marker::{BarEnd, ErrorBar, Glyph, Lines};
 use super::style::{
     curve_color, drawing, font, series_color, DESC_PX, LEGEND_PAD, LEGEND_PX, LEGEND_SAMPLE,
     MARKER_R, NOTE_PX, TICK_PX, TITLE_PX,
@@ -14,6 +14,7 @@ use super::{Figure, PlotError, Rendered, Scale, HEIGHT, WIDTH};
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
 use plotters::prelude::*;
+use plotters_backend::BackendCoord;
 
 /// Renders a figure as an SVG document of [`WIDTH`] x [`HEIGHT`] pixels.
 ///
@@ -22,10 +23,13 @@ pub fn render_svg(fig: &Figure) -> Result<String, PlotError> {
     render(fig).map(|r| r.svg)
 }
 
-/// Series in plotted coordinates (with each point's label), and what was left out.
+/// Series in plotted coordinates (with each point's label and error bar), and what was left
+/// out.
 pub(super) struct Prepared {
     series: Vec<Vec<(f64, f64)>>,
     labels: Vec<Vec<String>>,
+    /// Each point's error bar: plotted y of its low and high ends, not yet cut to the axis.
+    bars: Vec<Vec<Option<(f64, f64)>>>,
     curves: Vec<Vec<Option<(f64, f64)>>>,
     skipped_points: usize,
     skipped_curve_points: usize,
@@ -35,22 +39,26 @@ pub(super) fn prepare(fig: &Figure) -> Prepared {
     let mut skipped_points = 0;
     let mut skipped_curve_points = 0;
     let map = |&(x, y): &(f64, f64)| Some((to_plot(fig.x_scale, x)?, to_plot(fig.y_scale, y)?));
-    let (series, labels) = fig
-        .series
-        .iter()
-        .map(|s| {
-            let kept: Vec<((f64, f64), String)> = s
-                .points
-                .iter()
-                .enumerate()
-                .filter_map(|(k, p)| {
-                    Some((map(p)?, s.point_labels.get(k).cloned().unwrap_or_default()))
-                })
-                .collect();
-            skipped_points += s.points.len() - kept.len();
-            kept.into_iter().unzip()
-        })
-        .unzip();
+    let (mut series, mut labels, mut bars) = (Vec::new(), Vec::new(), Vec::new());
+    for s in &fig.series {
+        let (mut pts, mut lbls, mut brs) = (Vec::new(), Vec::new(), Vec::new());
+        for (k, p) in s.points.iter().enumerate() {
+            let Some(at) = map(p) else {
+                skipped_points += 1;
+                continue;
+            };
+            pts.push(at);
+            lbls.push(s.point_labels.get(k).cloned().unwrap_or_default());
+            brs.push(
+                s.y_errors
+                    .get(k)
+                    .and_then(|&e| error_bar(fig.y_scale, p.1, e)),
+            );
+        }
+        series.push(pts);
+        labels.push(lbls);
+        bars.push(brs);
+    }
     let curves = fig
         .curves
         .iter()
@@ -63,6 +71,7 @@ pub(super) fn prepare(fig: &Figure) -> Prepared {
     Prepared {
         series,
         labels,
+        bars,
         curves,
         skipped_points,
         skipped_curve_points,
@@ -89,6 +98,7 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
     let x_axis = plan_axis("x", fig.x_scale, fig.x_range, &xs)?;
     let y_axis = plan_axis("y", fig.y_scale, fig.y_range, &ys)?;
 
+    let inside = |&(u, v): &(f64, f64)| x_axis.contains(u) && y_axis.contains(v);
     let (visible, visible_labels): (Vec<Vec<_>>, Vec<Vec<String>>) = prepared
         .series
         .iter()
@@ -97,10 +107,22 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
             pts.iter()
                 .copied()
                 .zip(labels.iter().cloned())
-                .filter(|&((u, v), _)| x_axis.contains(u) && y_axis.contains(v))
+                .filter(|(p, _)| inside(p))
                 .unzip()
         })
         .unzip();
+    let visible_bars: Vec<Vec<Option<(f64, f64)>>> = prepared
+        .series
+        .iter()
+        .zip(&prepared.bars)
+        .map(|(pts, bars)| {
+            pts.iter()
+                .zip(bars)
+                .filter(|(p, _)| inside(p))
+                .map(|(_, bar)| *bar)
+                .collect()
+        })
+        .collect();
     let drawable: usize = prepared.series.iter().map(Vec::len).sum();
     let outside_range = drawable - visible.iter().map(Vec::len).sum::<usize>();
     let pieces: Vec<Vec<Vec<(f64, f64)>>> = prepared
@@ -140,6 +162,7 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
         let data = Data {
             series: &visible,
             labels: &visible_labels,
+            bars: &visible_bars,
             curves: &pieces,
         };
         draw(&root, fig, &x_axis, &y_axis, &data, &notes)?;
@@ -153,11 +176,12 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
     })
 }
 
-/// What is drawn inside the axes: the visible points of each series with their labels, and
-/// the visible pieces of each curve.
+/// What is drawn inside the axes: the visible points of each series with their labels and
+/// error bars, and the visible pieces of each curve.
 struct Data<'a> {
     series: &'a [Vec<(f64, f64)>],
     labels: &'a [Vec<String>],
+    bars: &'a [Vec<Option<(f64, f64)>>],
     curves: &'a [Vec<Vec<(f64, f64)>>],
 }
 
@@ -225,6 +249,50 @@ fn draw(
                 .map_err(drawing)?;
         }
     }
+    let (px, py) = chart.plotting_area().get_pixel_range();
+    let area = Rect {
+        x0: px.start,
+        x1: px.end,
+        y0: py.start,
+        y1: py.end,
+    };
+    // Error bars in pixels, all before any marker so that every marker is drawn over them.
+    let bar_lines: Vec<Vec<(BackendCoord, BackendCoord)>> = series
+        .iter()
+        .zip(data.bars)
+        .map(|(pts, bars)| {
+            pts.iter()
+                .zip(bars)
+                .filter_map(|(&(u, v), ends)| {
+                    let (low, high) = (*ends)?;
+                    let end = |w: f64| chart.backend_coord(&(u, w)).1;
+                    let bar = ErrorBar {
+                        at: chart.backend_coord(&(u, v)),
+                        top: BarEnd {
+                            y: end(high.min(y_axis.hi)),
+                            own: high <= y_axis.hi,
+                        },
+                        bottom: BarEnd {
+                            y: end(low.max(y_axis.lo)),
+                            own: low >= y_axis.lo,
+                        },
+                    };
+                    Some(bar.strokes((area.x0, area.x1)))
+                })
+                .flatten()
+                .collect()
+        })
+        .collect();
+    for (i, lines) in bar_lines.iter().enumerate() {
+        if !lines.is_empty() {
+            let ends = lines.iter().flat_map(|&(a, b)| [a, b]).collect();
+            root.draw(&Lines {
+                ends,
+                color: series_color(i),
+            })
+            .map_err(drawing)?;
+        }
+    }
     for (i, pts) in series.iter().enumerate() {
         let (marker, color) = (fig.series[i].marker, series_color(i));
         if fig.series[i].joined && pts.len() > 1 {
@@ -255,13 +323,6 @@ fn draw(
     }
 
     // Legend and notes go into the emptiest corners of the plotting area.
-    let (px, py) = chart.plotting_area().get_pixel_range();
-    let area = Rect {
-        x0: px.start,
-        x1: px.end,
-        y0: py.start,
-        y1: py.end,
-    };
     let pixel_points: Vec<(i32, i32)> = series
         .iter()
         .flatten()
@@ -275,12 +336,19 @@ fn draw(
     let crowding = |r: &Rect| -> usize {
         let grown = r.grow(MARKER_R + 2);
         let points = pixel_points.iter().filter(|p| grown.contains(**p)).count();
+        // A bar (its vertical line; the caps are at its ends) counts as much as a point: the
+        // box would hide the error of one point.
+        let bars = bar_lines
+            .iter()
+            .flatten()
+            .filter(|(a, b)| a.0 == b.0 && grown.meets_segment(*a, *b))
+            .count();
         let lines = pixel_lines
             .iter()
             .flat_map(|l| l.windows(2))
             .filter(|w| grown.meets_segment(w[0], w[1]))
             .count();
-        points + 5 * lines
+        points + bars + 5 * lines
     };
 
     let legend_rows: Vec<LegendRow> = fig

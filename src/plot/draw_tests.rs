@@ -1,5 +1,7 @@
 //! Rendering: same figure, same bytes; well-formed SVG; labels, legend, bad points, ranges.
 use super::*;
+use crate::plot::marker::{BarEnd, ErrorBar};
+use crate::plot::style::ERROR_CAP;
 use crate::plot::{Curve, Marker, Series};
 
 const MU_BAR: &str = "μ\u{304}";
@@ -250,4 +252,181 @@ fn note_is_drawn() {
     };
     let svg = render_svg(&fig).expect("renders").replace('\n', "");
     assert!(svg.contains(">no measured dataset included</text>"));
+}
+
+/// Element count of `render_svg(&sample())` before error bars existed (none of its series has
+/// any): a bar drawn for a series without errors adds elements.
+const SAMPLE_ELEMENTS: usize = 208;
+
+/// The value of attribute `name` in one tag's text.
+fn attr(tag: &str, name: &str) -> Option<i32> {
+    let key = format!(" {name}=\"");
+    let at = tag.find(&key)? + key.len();
+    tag[at..].split('"').next()?.parse().ok()
+}
+
+/// The `<line>`s in colour `stroke`, as [x1, y1, x2, y2].
+fn lines_in(svg: &str, stroke: &str) -> Vec<[i32; 4]> {
+    svg.split("<line")
+        .skip(1)
+        .filter_map(|t| t.split('>').next())
+        .filter(|t| t.contains(&format!("stroke=\"{stroke}\"")))
+        .map(|t| ["x1", "y1", "x2", "y2"].map(|n| attr(t, n).expect("line coordinate")))
+        .collect()
+}
+
+/// Centre of the first `<circle>` in colour `stroke` (a data point: the legend comes after).
+fn first_circle(svg: &str, stroke: &str) -> (i32, i32) {
+    let tag = svg
+        .split("<circle")
+        .skip(1)
+        .filter_map(|t| t.split('>').next())
+        .find(|t| t.contains(&format!("stroke=\"{stroke}\"")))
+        .expect("a circle");
+    (attr(tag, "cx").expect("cx"), attr(tag, "cy").expect("cy"))
+}
+
+const BLUE: &str = "#0072B2";
+
+/// One circle at (5, 5) with error `e`, axes 0..10 (about 50 px per unit of y).
+fn one_point(y_scale: Scale, y_range: (f64, f64), y: f64, e: Vec<f64>) -> Figure {
+    Figure {
+        x_range: Some((0.0, 10.0)),
+        y_range: Some(y_range),
+        y_scale,
+        series: vec![Series {
+            label: "with error".into(),
+            points: vec![(5.0, y)],
+            y_errors: e,
+            ..Series::default()
+        }],
+        ..Figure::default()
+    }
+}
+
+#[test]
+fn error_bar_larger_than_marker_is_drawn_with_caps() {
+    let svg = render_svg(&one_point(Scale::Linear, (0.0, 10.0), 5.0, vec![2.0])).expect("renders");
+    let (cx, cy) = first_circle(&svg, BLUE);
+    let lines = lines_in(&svg, BLUE);
+    assert_eq!(lines.len(), 3, "bar and two caps: {lines:?}");
+    let [x1, y1, x2, y2] = lines[0];
+    assert_eq!((x1, x2), (cx, cx), "vertical through the point");
+    // From y - e (below, larger pixel y) to y + e, symmetric about the point (1 px: rounding).
+    assert!(
+        y1 - cy > 4 * MARKER_R && cy - y2 > 4 * MARKER_R,
+        "{lines:?} at {cy}"
+    );
+    assert!(((y1 - cy) - (cy - y2)).abs() <= 1);
+    for (cap, y) in [(lines[1], y2), (lines[2], y1)] {
+        assert_eq!(cap, [cx - ERROR_CAP, y, cx + ERROR_CAP, y]);
+    }
+    // Beneath the marker: the bar comes first in the document.
+    assert!(svg.find("<line").expect("line") < svg.find("<circle").expect("circle"));
+    parse_xmlish(&svg).expect("well formed");
+}
+
+#[test]
+fn error_bar_within_marker_is_not_drawn() {
+    // 0.05 units of y is about 2.5 px, less than the marker radius.
+    let svg = render_svg(&one_point(Scale::Linear, (0.0, 10.0), 5.0, vec![0.05])).expect("renders");
+    assert!(lines_in(&svg, BLUE).is_empty());
+    // Nor for zero, negative, non-finite or missing errors.
+    for e in [
+        vec![0.0],
+        vec![-2.0],
+        vec![f64::NAN],
+        vec![f64::INFINITY],
+        vec![],
+    ] {
+        let fig = one_point(Scale::Linear, (0.0, 10.0), 5.0, e);
+        assert!(lines_in(&render_svg(&fig).expect("renders"), BLUE).is_empty());
+    }
+}
+
+#[test]
+fn error_bar_is_cut_at_the_axes_without_caps() {
+    // Linear: y + e beyond the top of the range; only the lower end has a cap.
+    let svg = render_svg(&one_point(Scale::Linear, (0.0, 10.0), 9.0, vec![3.0])).expect("renders");
+    let lines = lines_in(&svg, BLUE);
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    let (_, cy) = first_circle(&svg, BLUE);
+    assert!(lines[1][1] > cy, "the cap is at the lower end: {lines:?}");
+    // Log: y - e <= 0 is cut at the bottom of the axis, the same pixel for any such e; the
+    // upper end at log10(y + e) keeps its cap.
+    let cut = |e: f64| {
+        let fig = one_point(Scale::Log, (0.1, 10.0), 1.0, vec![e]);
+        lines_in(&render_svg(&fig).expect("renders"), BLUE)
+    };
+    let (a, b) = (cut(1.0), cut(5.0));
+    assert_eq!((a.len(), b.len()), (2, 2), "{a:?} {b:?}");
+    assert_eq!(a[0][1], b[0][1], "lower end at the axis");
+    assert!(a[0][3] > b[0][3], "upper end at log10(1 + e): {a:?} {b:?}");
+    assert_eq!(a[1][1], a[0][3], "cap at the upper end");
+    // A point outside the range or not plottable has no bar.
+    let mut fig = one_point(Scale::Log, (0.1, 10.0), 20.0, vec![1.0, 5.0]);
+    fig.series[0].points.push((5.0, -1.0));
+    let r = render(&fig).expect("renders");
+    assert_eq!((r.outside_range, r.skipped_points), (1, 1));
+    assert!(lines_in(&r.svg, BLUE).is_empty());
+}
+
+#[test]
+fn figure_without_errors_draws_no_bars() {
+    let plain = render_svg(&sample()).expect("renders");
+    let names = parse_xmlish(&plain).expect("well formed");
+    assert_eq!(names.len(), SAMPLE_ELEMENTS);
+    // Circles and squares draw no lines in the series' colours; a bar would.
+    assert!(lines_in(&plain, BLUE).is_empty() && lines_in(&plain, "#D55E00").is_empty());
+    // Errors that draw no bar leave the bytes as they are.
+    let mut fig = sample();
+    fig.series[0].y_errors = vec![0.0; fig.series[0].points.len()];
+    fig.series[1].y_errors = vec![f64::NAN; 3];
+    assert_eq!(render_svg(&fig).expect("renders"), plain);
+}
+
+#[test]
+fn figure_with_errors_gives_identical_bytes() {
+    let mut fig = sample();
+    fig.series[0].y_errors = fig.series[0].points.iter().map(|p| 0.1 * p.1).collect();
+    let a = render_svg(&fig).expect("renders");
+    assert_eq!(a, render_svg(&fig.clone()).expect("renders"));
+    assert!(lines_in(&a, BLUE).len() > fig.series[0].points.len());
+    parse_xmlish(&a).expect("well formed");
+}
+
+#[test]
+fn error_bar_strokes_follow_the_marker_radius() {
+    let end = |y, own| BarEnd { y, own };
+    let bar = |top, bottom| ErrorBar {
+        at: (100, 200),
+        top,
+        bottom,
+    };
+    let r = MARKER_R;
+    // Within the marker: nothing.
+    assert!(bar(end(200 - r, true), end(200 + r, true))
+        .strokes((0, 800))
+        .is_empty());
+    // One arm beyond it (a log bar): the bar, and a cap on that arm only.
+    let s = bar(end(200 - r, true), end(200 + 3 * r, true)).strokes((0, 800));
+    assert_eq!(
+        s,
+        [
+            ((100, 200 + 3 * r), (100, 200 - r)),
+            (
+                (100 - ERROR_CAP, 200 + 3 * r),
+                (100 + ERROR_CAP, 200 + 3 * r)
+            ),
+        ]
+    );
+    // Caps are cut to the plotting area's columns; a cut end has none.
+    let s = bar(end(150, false), end(250, true)).strokes((99, 800));
+    assert_eq!(
+        s,
+        [
+            ((100, 250), (100, 150)),
+            ((99, 250), (100 + ERROR_CAP, 250))
+        ]
+    );
 }

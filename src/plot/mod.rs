@@ -28,7 +28,15 @@
 //! and 10000 and as powers of ten otherwise. Points that are not finite, or not positive on a
 //! log axis, are skipped and counted ([`Rendered`]), and the figure itself says how many were
 //! left out; they never make rendering fail or panic.
-
+//!
+//! # Error bars
+//!
+//! A series may give each point a vertical error bar ([`Series::y_errors`]): a thin line in
+//! the series' colour from y - e to y + e, mapped through the y axis, with short caps, beneath
+//! the markers. It is drawn only where it reaches further than the marker's radius from the
+//! point (a shorter bar would hide under the marker) and is cut at the plotting area; an end
+//! that is cut has no cap. On a log axis an end y - e <= 0 is cut at the bottom of the axis.
+//! Bars do not widen an automatic axis range, and points not drawn have no bar.
 //!
 //! # Files
 //!
@@ -108,6 +116,10 @@ pub struct Series {
     pub joined: bool,
     /// A short text beside each point (empty: none); missing entries are blank.
     pub point_labels: Vec<String>,
+    /// Half-width e of each point's vertical error bar, in data units of y, in the order of
+    /// `points`: the error bar from y - e to y + e (empty: none); missing, zero, negative or
+    /// non-finite entries draw no bar.
+    pub y_errors: Vec<f64>,
 }
 
 /// A model curve drawn as a line through its points, in order.

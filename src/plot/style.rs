@@ -13,6 +13,8 @@ pub(super) const TICK_PX: f64 = 15.0;
 pub(super) const LEGEND_PX: f64 = 15.0;
 pub(super) const NOTE_PX: f64 = 14.0;
 pub(super) const MARKER_R: i32 = 4;
+/// Half-width of an error bar's caps: narrower than the markers.
+pub(super) const ERROR_CAP: i32 = 3;
 pub(super) const LEGEND_SAMPLE: i32 = 30;
 pub(super) const LEGEND_PAD: i32 = 8;
 
