@@ -622,3 +622,70 @@ fn the_loaded_film_region_leaves_a_heavy_contact_unchanged() {
         domain.friction.sliding
     );
 }
+
+/// The discretisation error a level-7 solve reports (from its own level and the two below,
+/// src/solver/richardson.rs) against the same case solved at level 9: for the central film,
+/// the minimum film and the sliding friction, the estimate must be at least the distance to
+/// level 9. Level 9 is itself not converged, so the distance understates the true error by
+/// the level-9 error (a quarter to a half of the level-7 one at orders 2 to 1): bracketing it
+/// is what an error bar must do at the least. Returns the level-7 solve.
+fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
+    let p = problem(case);
+    let s = solve(&p, &Params::for_problem(&p, 7), None).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let fine_params = Params {
+        error_levels: 0,
+        ..Params::for_problem(&p, 9)
+    };
+    let fine = solve(&p, &fine_params, None).unwrap_or_else(|e| panic!("{what} L9: {e}"));
+    let e = s
+        .errors
+        .as_ref()
+        .expect("a case is solved with its error estimate");
+    assert_eq!(e.levels.len(), 3, "{what}: three levels, {:?}", e.levels);
+    let outputs = [
+        ("Hc", e.h_central, s.film.h_central, fine.film.h_central),
+        ("Hmin", e.h_min, s.film.h_min, fine.film.h_min),
+        (
+            "mu-bar",
+            e.mu_bar_sliding,
+            s.friction.sliding,
+            fine.friction.sliding,
+        ),
+    ];
+    for (name, estimate, value, level_9) in outputs {
+        let estimate = estimate.unwrap_or_else(|| panic!("{what}: no estimate of {name}"));
+        let distance = (value - level_9).abs();
+        assert!(
+            estimate.error >= distance,
+            "{what} {name}: level {} {value} +- {} (order {:?}), level 9 {level_9}",
+            s.info.level,
+            estimate.error,
+            estimate.order
+        );
+    }
+    s
+}
+
+#[test]
+fn the_error_estimate_brackets_level_9_on_a_light_contact() {
+    // Fig. 6 case 23 (5P4E, 40 C, 1 GPa, 12 m/s; M 4.76, L 57) on its wide domain with the
+    // far field: first-order convergence, a few per cent at level 7.
+    let c = physical("5p4e", 40.0, 1e9, 12.0, 0.005, 6e6, 1.0);
+    assert_estimate_brackets_level_9(&c, "Fig. 6 case 23");
+}
+
+#[test]
+fn the_error_estimate_brackets_level_9_on_the_table_4_case() {
+    // The Appendix case (M 1 739, L 14.8): the middle of the envelope.
+    let c = Table4Case::shipped().unwrap().case;
+    assert_estimate_brackets_level_9(&c, "Table 4");
+}
+
+#[test]
+fn the_error_estimate_brackets_level_9_on_a_heavy_contact() {
+    // Fig. 4 case 140 (mineral oil A, 60 C, 3 GPa, 2 m/s; M 11 070): its film closes at
+    // level 7, so it is solved at level 8 and estimated from levels 6-8.
+    let c = physical("mineral-oil-a", 60.0, 3e9, 2.0, 0.005, 6e6, 1.0);
+    let s = assert_estimate_brackets_level_9(&c, "M 11 070");
+    assert_eq!(s.info.level, 8);
+}

@@ -4,7 +4,10 @@
 use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use repro::paper::TargetReport;
 use repro::physics::case::Physics;
-use repro::solver::output::{Film, Friction, Info, Progress, SolveError, Step};
+use repro::solver::output::{
+    Film, Friction, Info, LadderStop, OutputErrors, Progress, SolveError, Step,
+};
+use repro::solver::richardson::ErrorEstimate;
 use serde_json::{json, Map, Value};
 
 /// What every solve reports, point or line contact: the keys of `repro solve --json`.
@@ -22,6 +25,8 @@ pub struct SolveReport<'a> {
     pub info: &'a Info,
     /// Characteristic shear stress, Eq. (12).
     pub tau_c: f64,
+    /// The outputs' discretisation error, where the solve estimated it.
+    pub errors: Option<&'a OutputErrors>,
 }
 
 impl SolveReport<'_> {
@@ -47,7 +52,97 @@ impl SolveReport<'_> {
             "mu_bar_eq13": eq13_mu_bar(self.tau_c, PAPER_C),
             "residual": self.info.residual(),
         }));
+        if let Some(e) = self.errors {
+            add(self.error_json(e));
+        }
         Value::Object(out)
+    }
+
+    /// The discretisation error's keys: each output's absolute error and extrapolated value
+    /// in the unit of its key (`hc_moes_error`, `hc_moes_extrapolated`, ...), and the whole
+    /// estimate (levels, orders, time) under `discretisation_error`.
+    fn error_json(&self, e: &OutputErrors) -> Value {
+        let mut out = Map::new();
+        for (key, estimate, scale) in self.estimates(e) {
+            let (error, extrapolated) = match estimate {
+                Some(x) => (json!(x.error * scale), json!(x.extrapolated * scale)),
+                None => (Value::Null, Value::Null),
+            };
+            out.insert(format!("{key}_error"), error);
+            out.insert(format!("{key}_extrapolated"), extrapolated);
+        }
+        out.insert("discretisation_error".into(), to_json(e));
+        Value::Object(out)
+    }
+
+    /// The three estimated outputs: their key, estimate and the factor from the solver's
+    /// unit to the key's (Moes units for the films).
+    fn estimates<'e>(
+        &self,
+        e: &'e OutputErrors,
+    ) -> [(&'static str, Option<&'e ErrorEstimate>, f64); 3] {
+        let moes = self.film.hc_moes / self.film.h_central;
+        [
+            ("hc_moes", e.h_central.as_ref(), moes),
+            ("hmin_moes", e.h_min.as_ref(), moes),
+            ("mu_bar_sliding", e.mu_bar_sliding.as_ref(), 1.0),
+        ]
+    }
+
+    /// The discretisation error as one line of text: each output's relative error, the
+    /// order it rests on, and the extrapolated values.
+    pub fn error_text(&self) -> String {
+        let Some(e) = self.errors else {
+            return String::new();
+        };
+        let values = [
+            self.film.hc_moes,
+            self.film.hmin_moes,
+            self.friction.sliding,
+        ];
+        let names = ["Hc", "Hmin", "mu-bar"];
+        let parts: Vec<String> = self
+            .estimates(e)
+            .iter()
+            .zip(values.iter().zip(names))
+            .map(|((_, estimate, scale), (value, name))| match estimate {
+                Some(x) => format!(
+                    "{name} {:.4} +- {:.2} % ({})",
+                    x.extrapolated * scale,
+                    100.0 * x.error * scale / value.abs(),
+                    order_text(x)
+                ),
+                None => format!("{name} not estimated"),
+            })
+            .collect();
+        let mut levels = match (e.levels.first(), e.levels.last()) {
+            (Some(a), Some(b)) => format!("levels {}-{}", a.level, b.level),
+            _ => "no levels".into(),
+        };
+        match e.stopped {
+            Some(LadderStop::FilmClosed { level }) => {
+                levels += &format!(", level {level} not read: its film closes at the centre")
+            }
+            Some(LadderStop::NotConverged { level }) => {
+                levels += &format!(", level {level} not read: it did not converge")
+            }
+            None => {}
+        }
+        format!(
+            "grid error  {} [extrapolated, Moes; {levels}, {:.2} s]\n",
+            parts.join(", "),
+            e.seconds
+        )
+    }
+}
+
+/// How an estimate was made, in a few words.
+fn order_text(x: &ErrorEstimate) -> String {
+    match (x.trusted(), x.order) {
+        (true, Some(p)) => format!("order {p:.2}"),
+        (false, _) if x.oscillating => "oscillating, bound".into(),
+        (false, Some(p)) => format!("order {p:.2} not trusted, bound"),
+        _ => "bound".into(),
     }
 }
 

@@ -98,6 +98,7 @@ pub fn point_report<'a>(problem: &Problem, s: &'a PointSolution) -> SolveReport<
         friction: &s.friction,
         info: &s.info,
         tau_c: problem.tau_c(),
+        errors: s.errors.as_ref(),
     }
 }
 
@@ -202,7 +203,8 @@ fn point_text(problem: &Problem, s: &PointSolution) -> String {
         s.friction.total(),
         tau_c,
         (tau_c / 5.0).asinh(),
-    ) + &limit
+    ) + &point_report(problem, s).error_text()
+        + &limit
 }
 
 /// `repro solve --line`: the line contact (Fig. 7) from the same flags.
@@ -250,6 +252,7 @@ fn line_report<'a>(problem: &LineProblem, s: &'a LineSolution) -> SolveReport<'a
         friction: &s.friction,
         info: &s.info,
         tau_c: problem.tau_c(),
+        errors: s.errors.as_ref(),
     }
 }
 
@@ -272,5 +275,6 @@ fn line_text(problem: &LineProblem, s: &LineSolution) -> String {
         s.friction.sliding, rolling, s.friction.total(),
         tau_c, (tau_c / 5.0).asinh(),
         s.info.cycles, s.info.residual(), s.info.load_error, s.info.seconds,
-    ) + &limit
+    ) + &line_report(problem, s).error_text()
+        + &limit
 }

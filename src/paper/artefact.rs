@@ -61,6 +61,70 @@ pub enum Measure {
         /// RMS relative deviation on them.
         rms_rel_dev: f64,
     },
+    /// The discretisation error of the target's solved cases
+    /// ([`crate::solver::richardson`]).
+    DiscretisationError(ErrorSummary),
+}
+
+/// The median of `v` (NaN when empty).
+pub fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n == 0 {
+        f64::NAN
+    } else if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+/// The spread of one output's relative discretisation error over a target's cases.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Spread {
+    /// Median relative error.
+    pub median: f64,
+    /// Largest relative error.
+    pub worst: f64,
+    /// The case (1-based, as in the target's CSV) of the largest.
+    pub worst_case: usize,
+}
+
+impl Spread {
+    /// The spread of `(case, relative error)` pairs; `None` when there are none.
+    pub fn of(mut errors: Vec<(usize, f64)>) -> Option<Spread> {
+        errors.retain(|e| e.1.is_finite());
+        let &(worst_case, worst) = errors.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
+        Some(Spread {
+            median: median(errors.iter().map(|e| e.1).collect()),
+            worst,
+            worst_case,
+        })
+    }
+
+    /// "median m %, worst w % (case c)".
+    pub fn describe(&self) -> String {
+        format!(
+            "median {:.2} %, worst {:.2} % (case {})",
+            100.0 * self.median,
+            100.0 * self.worst,
+            self.worst_case
+        )
+    }
+}
+
+/// The discretisation error of a target's outputs: central film, minimum film and the
+/// friction its figure plots, over the cases that carry an estimate.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ErrorSummary {
+    /// Cases with an estimate.
+    pub estimated: usize,
+    /// Central film.
+    pub h_central: Option<Spread>,
+    /// Minimum film.
+    pub h_min: Option<Spread>,
+    /// The plotted `mu-bar` (sliding, or total for Figs. 1-2).
+    pub mu_bar: Option<Spread>,
 }
 
 impl Measure {
@@ -132,6 +196,14 @@ impl TargetReport {
     pub fn eq13(&self) -> Option<&Fit> {
         self.measures.iter().find_map(|m| match m {
             Measure::Eq13(f) => Some(f),
+            _ => None,
+        })
+    }
+
+    /// The discretisation error of its cases, where they carry one.
+    pub fn discretisation_error(&self) -> Option<&ErrorSummary> {
+        self.measures.iter().find_map(|m| match m {
+            Measure::DiscretisationError(e) => Some(e),
             _ => None,
         })
     }

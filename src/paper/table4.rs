@@ -108,7 +108,11 @@ pub fn compute(
         let solved = solve(&problem, &params(&problem, level), Some(&mut observer));
         rows.push(Table4Level {
             level,
-            outcome: CaseOutcome::of(solved.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
+            outcome: CaseOutcome::of(
+                solved
+                    .as_ref()
+                    .map(|s| (&s.film, &s.friction, &s.info, s.errors.as_ref())),
+            ),
             seconds: Some(t.elapsed().as_secs_f64()),
             tau_c: problem.tau_c(),
             key: None,

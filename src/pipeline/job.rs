@@ -51,8 +51,10 @@ impl Solve {
                     Some(s) => point::solve_from(problem, params, s, None),
                     None => point::solve(problem, params, None),
                 };
-                let mut outcome =
-                    CaseOutcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info)));
+                let mut outcome = CaseOutcome::of(
+                    r.as_ref()
+                        .map(|s| (&s.film, &s.friction, &s.info, s.errors.as_ref())),
+                );
                 if let (Ok(s), Some(contact), CaseOutcome::Solved(solved)) =
                     (&r, thermal, &mut outcome)
                 {
@@ -69,7 +71,10 @@ impl Solve {
             Solve::Line { problem, params } => {
                 let r = line::solve(problem, params, None);
                 (
-                    CaseOutcome::of(r.as_ref().map(|s| (&s.film, &s.friction, &s.info))),
+                    CaseOutcome::of(
+                        r.as_ref()
+                            .map(|s| (&s.film, &s.friction, &s.info, s.errors.as_ref())),
+                    ),
                     None,
                 )
             }

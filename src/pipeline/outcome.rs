@@ -1,7 +1,8 @@
 //! What a solve yields, as cached: the numbers of a converged case ([`SolvedCase`]), or the
 //! typed reason it failed ([`Failure`]). Failures are results too: cached, counted and shown.
 
-use crate::solver::output::{Film, Friction, Info, SolveError, StartKind};
+use crate::solver::output::{Film, Friction, Info, OutputErrors, SolveError, StartKind};
+use crate::solver::richardson::ErrorEstimate;
 use crate::solver::thermal::Thermal;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -41,13 +42,17 @@ pub struct SolvedCase {
     /// post-process failed.
     #[serde(default)]
     pub thermal: Vec<Thermal>,
+    /// The outputs' discretisation error, where the solve estimated it (films in `H`).
+    #[serde(default)]
+    pub errors: Option<Box<OutputErrors>>,
     // The wall time is not part of the result: it lives in the entry's stamp. (Entries
     // written before stamps carry a `seconds` here, which is ignored on reading.)
 }
 
 impl SolvedCase {
     /// The numbers of a point or line solution's parts.
-    pub fn of(film: &Film, friction: &Friction, info: &Info) -> Self {
+    pub fn of(parts: Parts) -> Self {
+        let (film, friction, info, errors) = parts;
         SolvedCase {
             h_central: film.h_central,
             h_min: film.h_min,
@@ -62,7 +67,30 @@ impl SolvedCase {
             load_error: info.load_error,
             start: info.start,
             thermal: Vec::new(),
+            errors: errors.cloned().map(Box::new),
         }
+    }
+
+    /// The estimate of the central film, the minimum film, sliding and total `mu-bar`.
+    pub fn estimate(&self, output: Output) -> Option<&ErrorEstimate> {
+        let e = self.errors.as_ref()?;
+        match output {
+            Output::HCentral => e.h_central.as_ref(),
+            Output::HMin => e.h_min.as_ref(),
+            Output::MuBarSliding => e.mu_bar_sliding.as_ref(),
+            Output::MuBarTotal => e.mu_bar_total.as_ref(),
+        }
+    }
+
+    /// The relative discretisation error of `output` (`None` where not estimated).
+    pub fn relative_error(&self, output: Output) -> Option<f64> {
+        let value = match output {
+            Output::HCentral => self.h_central,
+            Output::HMin => self.h_min,
+            Output::MuBarSliding => self.mu_bar_sliding,
+            Output::MuBarTotal => self.mu_bar_total(),
+        };
+        self.estimate(output).map(|e| e.relative(value))
     }
 
     /// The thermal post-process with the default inputs (steel), if computed.
@@ -74,6 +102,22 @@ impl SolvedCase {
     pub fn mu_bar_total(&self) -> f64 {
         self.mu_bar_sliding + self.mu_bar_rolling.unwrap_or(0.0)
     }
+}
+
+/// A solution's parts: film, friction, how it went and the outputs' discretisation error.
+pub type Parts<'a> = (&'a Film, &'a Friction, &'a Info, Option<&'a OutputErrors>);
+
+/// An output that carries a discretisation error ([`SolvedCase::estimate`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    /// Central film.
+    HCentral,
+    /// Minimum film.
+    HMin,
+    /// Sliding `mu-bar`.
+    MuBarSliding,
+    /// Sliding plus rolling `mu-bar` (Figs. 1-2).
+    MuBarTotal,
 }
 
 /// Why a solve failed, in a short stable name (no numbers, the same on every machine) for
@@ -160,9 +204,9 @@ pub enum CaseOutcome {
 
 impl CaseOutcome {
     /// The outcome of a solve that produced `parts` or failed.
-    pub fn of(parts: Result<(&Film, &Friction, &Info), &SolveError>) -> Self {
+    pub fn of(parts: Result<Parts, &SolveError>) -> Self {
         match parts {
-            Ok((f, fr, i)) => CaseOutcome::Solved(SolvedCase::of(f, fr, i)),
+            Ok(p) => CaseOutcome::Solved(SolvedCase::of(p)),
             Err(e) => CaseOutcome::Failed(Failure::of(e)),
         }
     }

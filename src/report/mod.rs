@@ -5,7 +5,7 @@
 
 pub mod html;
 
-use crate::paper::artefact::{Artefact, Measure, TargetReport};
+use crate::paper::artefact::{Artefact, ErrorSummary, Measure, Spread, TargetReport};
 use crate::paper::{build, find};
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::{rows, Decimals};
@@ -46,6 +46,17 @@ struct SummaryRow<'a> {
     fitted_c_all: Option<f64>,
     /// The refined formula's cross-validated RMS relative deviation (the `mastercurve` target).
     refined_rms_rel_dev: Option<f64>,
+    /// The discretisation error of the cases: median and worst relative error of the central
+    /// film, the minimum film and the plotted `mu-bar`, and the case of the worst.
+    hc_err_median: Option<f64>,
+    hc_err_worst: Option<f64>,
+    hc_err_worst_case: Option<usize>,
+    hmin_err_median: Option<f64>,
+    hmin_err_worst: Option<f64>,
+    hmin_err_worst_case: Option<usize>,
+    mu_err_median: Option<f64>,
+    mu_err_worst: Option<f64>,
+    mu_err_worst_case: Option<usize>,
     /// Wall time, s, to the hundredth.
     seconds: Decimals<2>,
 }
@@ -63,6 +74,53 @@ fn refined_rms(built: &[TargetReport], name: &str) -> Option<f64> {
             } if *target == name => Some(*rms_rel_dev),
             _ => None,
         })
+}
+
+/// One output's error spread of a target, where its cases carry estimates.
+fn spread(b: &TargetReport, of: fn(&ErrorSummary) -> Option<Spread>) -> Option<Spread> {
+    b.discretisation_error().and_then(of)
+}
+
+/// The discretisation error per target: median and worst relative error of the central film,
+/// the minimum film and the plotted friction, with the case of the worst.
+fn error_table(built: &[TargetReport]) -> String {
+    let rows: Vec<String> = built
+        .iter()
+        .filter_map(|b| {
+            let e = b.discretisation_error()?;
+            let cell = |s: Option<Spread>| {
+                s.map(|s| {
+                    format!(
+                        "{} % / {} % (case {})",
+                        human(100.0 * s.median),
+                        human(100.0 * s.worst),
+                        s.worst_case
+                    )
+                })
+                .unwrap_or_default()
+            };
+            Some(format!(
+                "<tr><td><a href=\"#{name}\">{name}</a></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n",
+                e.estimated,
+                cell(e.h_central),
+                cell(e.h_min),
+                cell(e.mu_bar),
+                name = b.name,
+            ))
+        })
+        .collect();
+    if rows.is_empty() {
+        return String::new();
+    }
+    format!(
+        "<h2>Discretisation error</h2>\n<p>Each case's error, estimated from its level and the \
+         two below it (observed order, Richardson extrapolation, Roache's safety factor; \
+         docs/ACCURACY_NOTES.md): median / worst relative error over the cases, and the case \
+         of the worst (its row in the figure's CSV). The figures draw it as error bars where \
+         it is larger than the marker.</p>\n<table>\n<tr><th>target</th><th>cases estimated</th>\
+         <th>central film</th><th>minimum film</th><th>mu-bar</th></tr>\n{}</table>\n",
+        rows.concat()
+    )
 }
 
 /// `figures/summary.csv`, one row per target.
@@ -84,6 +142,15 @@ pub fn summary_csv(built: &[TargetReport]) -> String {
             fitted_c_high: fit.map(|f| f.c_high),
             fitted_c_all: b.eq13_c_all(),
             refined_rms_rel_dev: refined_rms(built, b.name),
+            hc_err_median: spread(b, |e| e.h_central).map(|s| s.median),
+            hc_err_worst: spread(b, |e| e.h_central).map(|s| s.worst),
+            hc_err_worst_case: spread(b, |e| e.h_central).map(|s| s.worst_case),
+            hmin_err_median: spread(b, |e| e.h_min).map(|s| s.median),
+            hmin_err_worst: spread(b, |e| e.h_min).map(|s| s.worst),
+            hmin_err_worst_case: spread(b, |e| e.h_min).map(|s| s.worst_case),
+            mu_err_median: spread(b, |e| e.mu_bar).map(|s| s.median),
+            mu_err_worst: spread(b, |e| e.mu_bar).map(|s| s.worst),
+            mu_err_worst_case: spread(b, |e| e.mu_bar).map(|s| s.worst_case),
             seconds: Decimals(b.seconds),
         }
     }))
@@ -240,6 +307,7 @@ claims quoted as &ldquo;paper&rdquo;.</p>\n<ul>\n",
     }
     page.push_str("</ul>\n");
     page.push_str(&measures_table(built));
+    page.push_str(&error_table(built));
     page.push_str(&reading_c());
     for b in built {
         page.push_str(&section(b, read));

@@ -11,6 +11,7 @@ pub mod line;
 pub(crate) mod line_search;
 pub mod output;
 pub mod point;
+pub mod richardson;
 pub mod subnormal;
 pub mod thermal;
 

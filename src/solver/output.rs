@@ -1,6 +1,7 @@
 //! What every solver returns: film thickness, reduced friction, convergence information, and
 //! the typed failure that carries the residual history.
 
+use crate::solver::richardson::{estimate, ErrorEstimate};
 use serde::Serialize;
 
 /// Film thickness results.
@@ -44,6 +45,75 @@ impl Friction {
     /// Sliding plus rolling (Figs. 1-2); the sliding part alone when rolling was not computed.
     pub fn total(&self) -> f64 {
         self.sliding + self.rolling.unwrap_or(0.0)
+    }
+}
+
+/// The outputs of one grid level, in the solver's unit (`H` for the films).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+pub struct LevelValues {
+    /// Grid level.
+    pub level: u32,
+    /// Central film.
+    pub h_central: f64,
+    /// Minimum film.
+    pub h_min: f64,
+    /// Sliding `mu-bar`.
+    pub mu_bar_sliding: f64,
+    /// Sliding plus rolling `mu-bar` (the sliding part where rolling is not computed).
+    pub mu_bar_total: f64,
+}
+
+/// The discretisation error of the outputs, from the finest level and the coarser levels
+/// solved on their own ([`crate::solver::richardson`]); estimates in the solver's unit.
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
+pub struct OutputErrors {
+    /// The levels read, coarse to fine (the last is the solution's).
+    pub levels: Vec<LevelValues>,
+    /// Central film (`None` with fewer than two levels).
+    pub h_central: Option<ErrorEstimate>,
+    /// Minimum film.
+    pub h_min: Option<ErrorEstimate>,
+    /// Sliding `mu-bar`.
+    pub mu_bar_sliding: Option<ErrorEstimate>,
+    /// Sliding plus rolling `mu-bar`.
+    pub mu_bar_total: Option<ErrorEstimate>,
+    /// Wall time of the coarser levels' solves, s: what the estimate costs.
+    pub seconds: f64,
+    /// Why the ladder of coarser levels ended before [`crate::solver::point::Params::error_levels`]
+    /// levels (`None` where it did not).
+    #[serde(default)]
+    pub stopped: Option<LadderStop>,
+}
+
+/// Why a coarser level of the error estimate was not read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, serde::Deserialize)]
+#[serde(rename_all = "kebab-case", tag = "reason")]
+pub enum LadderStop {
+    /// Its film closed at the centre: too coarse for the load.
+    FilmClosed {
+        /// The level.
+        level: u32,
+    },
+    /// It did not converge.
+    NotConverged {
+        /// The level.
+        level: u32,
+    },
+}
+
+impl OutputErrors {
+    /// The estimates of `levels` (consecutive, coarse to fine).
+    pub fn of(levels: Vec<LevelValues>, seconds: f64) -> Self {
+        let of = |f: fn(&LevelValues) -> f64| estimate(&levels.iter().map(f).collect::<Vec<_>>());
+        OutputErrors {
+            h_central: of(|v| v.h_central),
+            h_min: of(|v| v.h_min),
+            mu_bar_sliding: of(|v| v.mu_bar_sliding),
+            mu_bar_total: of(|v| v.mu_bar_total),
+            levels,
+            seconds,
+            stopped: None,
+        }
     }
 }
 

@@ -27,7 +27,9 @@ pub mod cases;
 pub mod files;
 pub mod picture;
 
+use crate::paper::artefact::median;
 use crate::solver::output::SolveError;
+use crate::solver::richardson::estimate;
 pub use cases::{AccuracyCase, AccuracyProblem, LevelOutputs};
 use std::time::Instant;
 
@@ -63,22 +65,7 @@ pub struct Reference {
     pub order_used: Option<(f64, f64)>,
 }
 
-/// The observed orders an extrapolation accepts: a uniform-grid discretisation of this
-/// problem converges at first to second order (docs/ACCURACY_NOTES.md), and an order
-/// outside [0.8, 3] over three levels says the levels are not yet in the asymptotic range
-/// (or that two of them agree by chance) rather than what the next level will do.
-pub const ORDER_RANGE: (f64, f64) = (0.8, 3.0);
-
-/// The order an extrapolation uses for levels `a`, `b`, `c` (coarse to fine): their observed
-/// order where the two differences have one sign and the order lies in [`ORDER_RANGE`],
-/// else 1, the bound.
-fn usable_order(a: f64, b: f64, c: f64) -> f64 {
-    let monotone = (a - b) * (b - c) > 0.0;
-    match observed_order(a, b, c) {
-        Some(p) if monotone && (ORDER_RANGE.0..=ORDER_RANGE.1).contains(&p) => p,
-        _ => 1.0,
-    }
-}
+pub use crate::solver::richardson::ORDER_RANGE;
 
 /// `f` extrapolated from the level below, `c`, at order `p`.
 fn extrapolate(c: f64, f: f64, p: f64) -> f64 {
@@ -149,24 +136,6 @@ impl DomainCheck {
     }
 }
 
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    if n == 0 {
-        f64::NAN
-    } else if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    }
-}
-
-/// Observed order `log2(|a - b| / |b - c|)` of three consecutive levels.
-fn observed_order(a: f64, b: f64, c: f64) -> Option<f64> {
-    let r = (a - b).abs() / (b - c).abs();
-    (r.is_finite() && r > 0.0).then(|| r.log2())
-}
-
 /// The reference of a case from its converged levels.
 pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
     let ok: Vec<(u32, LevelOutputs)> = levels
@@ -186,28 +155,24 @@ pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
     };
     let coarse =
         (rest.len() >= 2 && rest[rest.len() - 2].0 + 2 == lf).then(|| rest[rest.len() - 2].1);
-    let order = coarse.and_then(|a| {
-        Some((
-            observed_order(a.h_central, c.h_central, f.h_central)?,
-            observed_order(a.mu_bar, c.mu_bar, f.mu_bar)?,
-        ))
-    });
-    let (kind, used) = match coarse {
-        Some(a) => (
-            "observed-order",
-            (
-                usable_order(a.h_central, c.h_central, f.h_central),
-                usable_order(a.mu_bar, c.mu_bar, f.mu_bar),
-            ),
-        ),
-        None => ("richardson", (2.0, 2.0)),
+    let Some(a) = coarse else {
+        return Some(Reference {
+            h_central: extrapolate(c.h_central, f.h_central, 2.0),
+            mu_bar: extrapolate(c.mu_bar, f.mu_bar, 2.0),
+            kind: "richardson",
+            order: None,
+            order_used: Some((2.0, 2.0)),
+        });
     };
+    // The solver's own estimate over the three levels (the same fit and acceptance).
+    let film = estimate(&[a.h_central, c.h_central, f.h_central])?;
+    let mu = estimate(&[a.mu_bar, c.mu_bar, f.mu_bar])?;
     Some(Reference {
-        h_central: extrapolate(c.h_central, f.h_central, used.0),
-        mu_bar: extrapolate(c.mu_bar, f.mu_bar, used.1),
-        kind,
-        order,
-        order_used: Some(used),
+        h_central: film.extrapolated,
+        mu_bar: mu.extrapolated,
+        kind: "observed-order",
+        order: film.order.zip(mu.order),
+        order_used: Some((film.order_used, mu.order_used)),
     })
 }
 

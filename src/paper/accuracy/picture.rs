@@ -24,6 +24,7 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, String> {
                 marker: Marker::nth(i),
                 joined: true,
                 point_labels,
+                y_errors: Vec::new(),
             }
         })
         .collect();

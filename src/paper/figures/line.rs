@@ -12,7 +12,7 @@ use crate::pipeline::csv::rows;
 use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
 use crate::pipeline::job::{Job, Solve};
 use crate::pipeline::keys::line_key;
-use crate::pipeline::outcome::CaseOutcome;
+use crate::pipeline::outcome::{CaseOutcome, Output};
 use crate::solver::line::Params;
 use serde::Serialize;
 
@@ -140,6 +140,12 @@ struct LineRow {
     rel_dev_eq13: Option<f64>,
     rel_dev_flat: Option<f64>,
     cycles: Option<usize>,
+    /// Relative discretisation errors and the extrapolated sliding `mu-bar`
+    /// ([`crate::solver::richardson`], from levels `level - 2` to `level`).
+    hc_rel_error: Option<f64>,
+    hmin_rel_error: Option<f64>,
+    mu_bar_sliding_rel_error: Option<f64>,
+    mu_bar_sliding_extrapolated: Option<f64>,
     status: String,
 }
 
@@ -177,12 +183,27 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                     rel_dev_eq13: Some(s.mu_bar_sliding / eq13 - 1.0),
                     rel_dev_flat: Some(s.mu_bar_sliding / flat - 1.0),
                     cycles: Some(s.cycles),
+                    hc_rel_error: s.relative_error(Output::HCentral),
+                    hmin_rel_error: s.relative_error(Output::HMin),
+                    mu_bar_sliding_rel_error: s.relative_error(Output::MuBarSliding),
+                    mu_bar_sliding_extrapolated: s
+                        .estimate(Output::MuBarSliding)
+                        .map(|e| e.extrapolated),
                     ..row
                 }
             }
             None => row,
         }
     }))
+}
+
+/// The absolute discretisation error of the sliding `mu-bar` of the solved line contacts, in
+/// the order of [`line_points`] (0 where not estimated).
+pub fn line_errors(runs: &[LineRun]) -> Vec<f64> {
+    runs.iter()
+        .filter_map(|r| r.outcome.solved())
+        .map(|s| s.estimate(Output::MuBarSliding).map_or(0.0, |e| e.error))
+        .collect()
 }
 
 /// The solved line contacts as `(tau_c, sliding mu-bar)`.

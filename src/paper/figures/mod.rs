@@ -6,7 +6,9 @@ pub mod line;
 pub mod picture;
 pub mod rows;
 
-use crate::paper::artefact::{Artefact, Measure, TargetReport, LINE_LEVEL, WORKING_LEVEL};
+use crate::paper::artefact::{
+    Artefact, ErrorSummary, Measure, Spread, TargetReport, LINE_LEVEL, WORKING_LEVEL,
+};
 use crate::paper::cases::shipped_sweep;
 use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
 use crate::physics::case::Case;
@@ -14,7 +16,7 @@ use crate::pipeline::context::Context;
 use crate::pipeline::executor::{run_cases, PointRun, RunProgress};
 use crate::pipeline::job::{point_jobs, Job};
 use crate::pipeline::keys::LINE_SOLVER_REVISION;
-use crate::pipeline::outcome::CaseOutcome;
+use crate::pipeline::outcome::{CaseOutcome, Output, SolvedCase};
 use crate::pipeline::provenance::{Provenance, SUFFIX};
 use crate::pipeline::sweep::Sweep;
 use crate::plot::{Marker, Series};
@@ -53,6 +55,46 @@ impl Plot {
             solved.mu_bar_sliding
         };
         Some((x, y))
+    }
+
+    /// The discretisation error over `runs` (each case numbered from 1, as in the CSV) of
+    /// the central and minimum film and the friction it plots; `None` when no case carries
+    /// an estimate.
+    pub fn error_summary(self, runs: &[PointRun]) -> Option<ErrorSummary> {
+        let spread = |output: Output| {
+            Spread::of(
+                runs.iter()
+                    .enumerate()
+                    .filter_map(|(i, r)| Some((i + 1, r.solved()?.relative_error(output)?)))
+                    .collect(),
+            )
+        };
+        let mu = if self.total {
+            Output::MuBarTotal
+        } else {
+            Output::MuBarSliding
+        };
+        let estimated = runs
+            .iter()
+            .filter(|r| r.solved().is_some_and(|s| s.errors.is_some()))
+            .count();
+        (estimated > 0).then(|| ErrorSummary {
+            estimated,
+            h_central: spread(Output::HCentral),
+            h_min: spread(Output::HMin),
+            mu_bar: spread(mu),
+        })
+    }
+
+    /// The absolute discretisation error of the `y` it plots for a solved case (`None` where
+    /// not estimated).
+    pub fn y_error(self, solved: &SolvedCase) -> Option<f64> {
+        let output = if self.total {
+            Output::MuBarTotal
+        } else {
+            Output::MuBarSliding
+        };
+        solved.estimate(output).map(|e| e.error)
     }
 }
 
@@ -198,6 +240,7 @@ impl Artefact for SweepFigure {
             let series = Series {
                 label: "line contact".into(),
                 points: line::line_points(&runs),
+                y_errors: line::line_errors(&runs),
                 marker: Marker::Cross,
                 ..Series::default()
             };
@@ -405,19 +448,18 @@ fn sweep_figure(
         .filter_map(|r| plot.xy(r).map(|p| (r.problem.tau_c(), p.1)))
         .chain(extra.iter().flat_map(|e| e.points.iter().copied()))
         .collect();
-    let measures = if plot.severity {
+    let mut measures = if plot.severity {
         Vec::new()
     } else {
         Measure::eq13(&points)
     };
+    measures.extend(plot.error_summary(&runs).map(Measure::DiscretisationError));
     let mut files = vec![csv];
     if let Some(svg) = picture::svg(
         stem,
         &format!("{heading} — {}", sweep.title),
         &runs,
-        &|r| plot.xy(r),
-        plot.severity,
-        plot.total,
+        plot,
         extra,
     )? {
         files.push(ctx.write(&format!("{stem}.svg"), &svg)?);

@@ -2,6 +2,7 @@
 //! Figs. 2-7 `mu-bar` against `tau_c` on log-linear axes with Eq. (13) dashed. Series are split
 //! by the case's defining parameter so that the collapse (or not) is visible.
 
+use super::Plot;
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::eq13_curve;
 use crate::physics::case::CaseForm;
@@ -42,21 +43,20 @@ fn series_key(name: &str, run: &PointRun) -> String {
     }
 }
 
-/// Renders figure `name` with `title` from its runs, `xy` giving each solved case's point,
-/// with `extra` series (the line contacts of Fig. 7) drawn after them.
+/// Renders figure `name` with `title` from its runs, each solved case's point as `plot` draws
+/// it with its discretisation error as an error bar, and `extra` series (the line contacts of
+/// Fig. 7) drawn after them.
 pub fn svg(
     name: &str,
     title: &str,
     runs: &[PointRun],
-    xy: &dyn Fn(&PointRun) -> Option<(f64, f64)>,
-    severity: bool,
-    total: bool,
+    plot: Plot,
     extra: &[Series],
 ) -> Result<Option<String>, String> {
     let mut keys: Vec<String> = Vec::new();
     let mut series: Vec<Series> = Vec::new();
     for r in runs {
-        let Some(p) = xy(r) else { continue };
+        let Some(p) = plot.xy(r) else { continue };
         let key = series_key(name, r);
         let i = match keys.iter().position(|k| *k == key) {
             Some(i) => i,
@@ -72,6 +72,8 @@ pub fn svg(
             }
         };
         series[i].points.push(p);
+        let error = r.solved().and_then(|s| plot.y_error(s));
+        series[i].y_errors.push(error.unwrap_or(0.0));
     }
     for e in extra {
         series.push(Series {
@@ -90,17 +92,17 @@ pub fn svg(
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
             (a.min(x), b.max(x))
         });
-    let curves = if severity || xs.is_empty() {
+    let curves = if plot.severity || xs.is_empty() {
         Vec::new()
     } else {
         vec![eq13_curve(x_min, x_max, PAPER_C, 200)]
     };
-    let y_label = if total {
+    let y_label = if plot.total {
         "total reduced friction μ̄"
     } else {
         "sliding reduced friction μ̄"
     };
-    let x_label = if severity {
+    let x_label = if plot.severity {
         "S̄^{1/4} M L^{3}"
     } else {
         "characteristic shear stress τ̄_{c}"

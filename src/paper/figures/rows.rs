@@ -8,7 +8,7 @@ use crate::paper::mastercurve::oracle::point_flat;
 use crate::physics::case::{Case, CaseForm, LubricantSpec};
 use crate::pipeline::csv::rows_renamed;
 use crate::pipeline::executor::PointRun;
-use crate::pipeline::outcome::{CaseOutcome, SolvedCase};
+use crate::pipeline::outcome::{CaseOutcome, Output, SolvedCase};
 use serde::Serialize;
 
 /// A row of a figure's CSV (`x` and `y` are named after what the figure plots).
@@ -47,8 +47,48 @@ struct FigureRow {
     newton_steps: Option<usize>,
     residual: Option<f64>,
     #[serde(flatten)]
+    errors: ErrorCells,
+    #[serde(flatten)]
     thermal: ThermalCells,
     status: String,
+}
+
+/// The discretisation error of a case ([`crate::solver::richardson`]): the relative error of
+/// the central film, the minimum film and the sliding `mu-bar`, the extrapolated central film
+/// (Moes) and sliding `mu-bar`, the absolute error of the figure's `y` (its error bar), and
+/// the levels the estimate read; blank where not estimated.
+#[derive(Debug, Default, Serialize)]
+struct ErrorCells {
+    hc_rel_error: Option<f64>,
+    hmin_rel_error: Option<f64>,
+    mu_bar_sliding_rel_error: Option<f64>,
+    hc_moes_extrapolated: Option<f64>,
+    mu_bar_sliding_extrapolated: Option<f64>,
+    y_error: Option<f64>,
+    error_levels: String,
+}
+
+impl ErrorCells {
+    fn of(s: &SolvedCase, plot: Plot) -> Self {
+        let moes = s.hc_moes / s.h_central;
+        let levels = s
+            .errors
+            .as_ref()
+            .map(|e| e.levels.as_slice())
+            .unwrap_or(&[]);
+        ErrorCells {
+            hc_rel_error: s.relative_error(Output::HCentral),
+            hmin_rel_error: s.relative_error(Output::HMin),
+            mu_bar_sliding_rel_error: s.relative_error(Output::MuBarSliding),
+            hc_moes_extrapolated: s.estimate(Output::HCentral).map(|e| e.extrapolated * moes),
+            mu_bar_sliding_extrapolated: s.estimate(Output::MuBarSliding).map(|e| e.extrapolated),
+            y_error: plot.y_error(s),
+            error_levels: match (levels.first(), levels.last()) {
+                (Some(a), Some(b)) => format!("{}-{}", a.level, b.level),
+                _ => String::new(),
+            },
+        }
+    }
 }
 
 /// The physical operating point of a case: lubricant, temperature (C), `p_H` (GPa), `u_m`
@@ -165,6 +205,7 @@ impl FigureRow {
                     cycles: Some(s.cycles),
                     newton_steps: Some(s.newton_steps),
                     residual: Some(s.residual),
+                    errors: ErrorCells::of(s, plot),
                     ..row
                 }
             }

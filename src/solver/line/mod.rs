@@ -37,14 +37,16 @@ mod transfer;
 
 use crate::physics::line_contact::{LineFilmFormula, LineHertz, LineProblem};
 use crate::solver::output::{
-    mean_change, Film, Friction, Info, Method, Progress, SolveError, Step,
+    mean_change, Film, Friction, Info, LevelValues, Method, OutputErrors, Progress, SolveError,
+    Step,
 };
+use crate::solver::richardson::ERROR_LEVELS;
 use level::{Level, Model, LOAD};
 use std::time::Instant;
 
 /// Revision of the line-contact numerics: part of every line-contact cache key, bumped
 /// whenever a change can move a result.
-pub const SOLVER_REVISION: &str = "line-3";
+pub const SOLVER_REVISION: &str = "line-4";
 
 /// Highest level the solver accepts (8192 intervals: a dense Jacobian of 0.5 GB).
 pub const MAX_LEVEL: u32 = 12;
@@ -129,8 +131,18 @@ impl Params {
     /// [`crate::solver::point::Params::for_problem`] is for the elliptical contact. Nothing
     /// depends on the case yet (the domain is [`LineDomain::default`] for all): the defaults
     /// at `level`.
+    ///
+    /// The nested iteration starts [`ERROR_LEVELS`] below `level` where the default start is
+    /// closer: the levels it converges on the way are the error estimate's.
     pub fn for_problem(_problem: &LineProblem, level: u32) -> Self {
-        Params::at_level(level)
+        let defaults = Params::at_level(level);
+        Params {
+            start_level: defaults
+                .start_level
+                .min(level.saturating_sub(ERROR_LEVELS))
+                .max(MIN_LEVEL),
+            ..defaults
+        }
     }
 }
 
@@ -151,6 +163,23 @@ pub struct LineSolution {
     pub friction: Friction,
     /// Convergence information.
     pub info: Info,
+    /// The outputs' discretisation error, from the finest level and the two below it, which
+    /// the grid sequence converges on the way ([`crate::solver::richardson`]); `None` where
+    /// the sequence started less than two levels below.
+    pub errors: Option<OutputErrors>,
+}
+
+/// The outputs of a converged line-contact level.
+fn values(level: &Level, model: &Model, lv: u32) -> LevelValues {
+    let film = friction::film(level, 1.0);
+    let mu = friction::friction(level, model, true);
+    LevelValues {
+        level: lv,
+        h_central: film.h_central,
+        h_min: film.h_min,
+        mu_bar_sliding: mu.sliding,
+        mu_bar_total: mu.total(),
+    }
 }
 
 /// The starting film constant: the central film of Moes' formula minus the Hertzian
@@ -196,6 +225,8 @@ pub fn solve(
         level.p[i] = LineHertz::pressure(level.x(i));
     }
     let mut history = Vec::new();
+    // Every converged level's outputs, for the error estimate.
+    let mut ladder = Vec::new();
     for lv in first..=params.level {
         if lv > first {
             let mut fine = Level::new(1usize << (lv + 1), d.x_start, d.x_end);
@@ -258,7 +289,11 @@ pub fn solve(
             });
         }
         let _ = finest;
+        ladder.push(values(&level, &model, lv));
     }
+    let estimated = ERROR_LEVELS as usize + 1;
+    let errors = (ladder.len() >= estimated)
+        .then(|| OutputErrors::of(ladder[ladder.len() - estimated..].to_vec(), 0.0));
     let fine = &level;
     let load_error = ((fine.load() - LOAD) / LOAD).abs();
     let cycles = history.len();
@@ -299,6 +334,7 @@ pub fn solve(
             seconds: start.elapsed().as_secs_f64(),
             start: crate::solver::output::StartKind::Cold,
         },
+        errors,
     })
 }
 

@@ -18,6 +18,7 @@ mod far_field;
 mod finish;
 mod friction;
 mod jacobian;
+mod ladder;
 mod level;
 mod multigrid;
 mod newton;
@@ -30,12 +31,15 @@ mod warm;
 use crate::physics::case::Problem;
 use crate::physics::film::{hc_eq10, hc_nijenbanning};
 use crate::solver::grid::Grid;
-use crate::solver::output::{Film, Friction, Info, Method, Progress, SolveError, StartKind};
+use crate::solver::output::{
+    Film, Friction, Info, Method, OutputErrors, Progress, SolveError, StartKind,
+};
 use cycles::{converge_by_cycles, cycle_progress, level_number, StallWindows, State};
 use edge::settle_top;
 use far_field::FarField;
 use finish::{finish, grid_sequence, Work};
 pub use friction::{FrictionRegion, LOADED_FILM_FACTOR};
+pub use ladder::CoarseSolution;
 use level::Model;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
 pub(crate) use level::LOAD;
@@ -46,7 +50,7 @@ pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-18";
+pub const SOLVER_REVISION: &str = "point-19";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -78,6 +82,11 @@ pub struct PointSolution {
     pub friction_region: FrictionRegion,
     /// Convergence information.
     pub info: Info,
+    /// The outputs' discretisation error ([`Params::error_levels`]; `None` where it is 0).
+    pub errors: Option<OutputErrors>,
+    /// The coarser levels' solutions behind `errors`, finest first: a member's ladder starts
+    /// from them ([`Start::coarser`]).
+    pub coarser: Vec<CoarseSolution>,
 }
 
 /// The level estimated to resolve the film of `problem` whose minimum film came out as
@@ -123,6 +132,9 @@ fn converge_cold(
         l0.p = grid.sample(crate::physics::hertz::Hertz::pressure);
     }
     let mut starts = Vec::with_capacity(top);
+    // The same states, as the starts of the coarser levels' solves for the error estimate
+    // ([`ladder`]): closer to their own solutions than the finest one injected.
+    let mut fmg = Vec::with_capacity(top);
     for k in 0..top {
         mg.make_top(k);
         if k > 0 {
@@ -136,6 +148,12 @@ fn converge_cold(
             observe(&cycle_progress(&mut mg, k, cycle, &before));
         }
         starts.push(State::of(&mg, k));
+        fmg.push(CoarseSolution {
+            level: level_number(&mg.levels[k]),
+            p: mg.levels[k].p.clone(),
+            delta: mg.h0,
+            residual: None,
+        });
     }
     mg.make_top(top);
     if top > 0 {
@@ -189,6 +207,7 @@ fn converge_cold(
             method,
             work,
             start: StartKind::Cold,
+            coarser: fmg,
         },
     ))
 }
@@ -223,6 +242,8 @@ struct Converged {
     method: Method,
     work: Work,
     start: StartKind,
+    /// Starts of the coarser levels' solves for the error estimate ([`ladder`]).
+    coarser: Vec<CoarseSolution>,
 }
 
 /// A hierarchy for `problem` on `params`' levels and domain, the far field of its edge, and
@@ -297,6 +318,7 @@ fn solve_with(
         mut method,
         mut work,
         start: start_kind,
+        coarser: run_coarser,
     } = run;
     // Whether a round of the edge needed Newton-Krylov: reported, while the refinement
     // below goes by how the level converged in the first place.
@@ -386,16 +408,30 @@ fn solve_with(
             residual_history: history,
         });
     }
+    let (grid, p, h, delta) = (fine.grid, fine.p.clone(), fine.h.clone(), mg.h0);
+    let level = level_number(fine);
+    // The coarser levels start from the base's where the member started from it, else from
+    // the full-multigrid states of the cold solve.
+    let warm_coarser = match (start_kind, warm_start) {
+        (StartKind::Warm, Some(s)) => &s.coarser[..],
+        _ => &run_coarser[..],
+    };
+    let (errors, coarser) = if params.error_levels > 0 {
+        let (e, c) = ladder::output_errors(&mut mg, params, method, warm_coarser, &mut observe);
+        (Some(e), c)
+    } else {
+        (None, Vec::new())
+    };
     Ok(PointSolution {
-        grid: fine.grid,
-        p: fine.p.clone(),
-        h: fine.h.clone(),
-        delta: mg.h0,
+        grid,
+        p,
+        h,
+        delta,
         film,
         friction,
         friction_region: params.friction_region,
         info: Info {
-            level: level_number(fine),
+            level,
             method,
             cycles,
             newton_steps: work.newton_steps,
@@ -405,6 +441,8 @@ fn solve_with(
             seconds: start.elapsed().as_secs_f64(),
             start: start_kind,
         },
+        errors,
+        coarser,
     })
 }
 

@@ -3,6 +3,7 @@
 use super::{stopping, FrictionRegion};
 use crate::physics::case::Problem;
 use crate::solver::grid::Domain;
+use crate::solver::richardson::ERROR_LEVELS;
 
 /// The condition on the domain's edge.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -126,6 +127,11 @@ pub struct Params {
     /// film of the heaviest Table 2 loads that close at level 7 (M up to ~11 000). The
     /// level solved on is reported in [`Info::level`].
     pub film_refinement_levels: u32,
+    /// Coarser levels solved on their own after the finest, for the outputs' discretisation
+    /// error ([`crate::solver::richardson`], the `ladder` module); 0 for none. Default 0 (studies of
+    /// the numerics solve their levels themselves); a case is solved with 2, the three levels
+    /// an observed order needs ([`Params::for_problem`]).
+    pub error_levels: u32,
 }
 
 impl Default for Params {
@@ -158,6 +164,7 @@ impl Default for Params {
             rolling_friction: true,
             require_positive_film: true,
             film_refinement_levels: 1,
+            error_levels: 0,
         }
     }
 }
@@ -192,6 +199,7 @@ impl Params {
             domain: Domain::for_problem(problem),
             edge: Edge::FarField,
             friction_region: FrictionRegion::LoadedFilm,
+            error_levels: ERROR_LEVELS,
             ..Params::default()
         }
     }

@@ -38,6 +38,9 @@ pub struct Start {
     pub delta: f64,
     /// What converged it.
     pub method: Method,
+    /// Its coarser levels' solutions (finest first), where its discretisation error was
+    /// estimated: the starts of the member's own.
+    pub coarser: Vec<super::CoarseSolution>,
     /// Its last residual.
     pub residual: f64,
 }
@@ -52,6 +55,7 @@ impl Start {
             delta: s.delta,
             method: s.info.method,
             residual: s.info.residual(),
+            coarser: s.coarser.clone(),
         }
     }
 
@@ -150,6 +154,7 @@ pub(super) fn converge(
                     method: Method::Cycles,
                     work,
                     start: StartKind::Warm,
+                    coarser: Vec::new(),
                 },
             ));
         }
@@ -174,6 +179,7 @@ pub(super) fn converge(
             method: Method::NewtonKrylov,
             work,
             start: StartKind::Warm,
+            coarser: Vec::new(),
         },
     ))
 }
