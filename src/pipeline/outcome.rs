@@ -1,8 +1,10 @@
 //! What a solve yields, as cached: the numbers of a converged case ([`SolvedCase`]), or the
 //! typed reason it failed ([`Failure`]). Failures are results too: cached, counted and shown.
 
-use crate::solver::output::{Film, Friction, Info, OutputErrors, SolveError, StartKind};
-use crate::solver::richardson::ErrorEstimate;
+use crate::solver::output::{
+    Film, Friction, Info, LevelValues, OutputErrors, SolveError, StartKind,
+};
+use crate::solver::richardson::{estimate, ErrorEstimate};
 use crate::solver::thermal::Thermal;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -71,15 +73,18 @@ impl SolvedCase {
         }
     }
 
-    /// The estimate of the central film, the minimum film, sliding and total `mu-bar`.
-    pub fn estimate(&self, output: Output) -> Option<&ErrorEstimate> {
-        let e = self.errors.as_ref()?;
-        match output {
-            Output::HCentral => e.h_central.as_ref(),
-            Output::HMin => e.h_min.as_ref(),
-            Output::MuBarSliding => e.mu_bar_sliding.as_ref(),
-            Output::MuBarTotal => e.mu_bar_total.as_ref(),
-        }
+    /// The estimate of the central film, the minimum film, sliding or total `mu-bar`, made
+    /// from the cached levels' values by the estimator as it is now (the levels are what the
+    /// solve computed; the estimate is arithmetic on them).
+    pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
+        let levels = &self.errors.as_ref()?.levels;
+        let value = |v: &LevelValues| match output {
+            Output::HCentral => v.h_central,
+            Output::HMin => v.h_min,
+            Output::MuBarSliding => v.mu_bar_sliding,
+            Output::MuBarTotal => v.mu_bar_total,
+        };
+        estimate(&levels.iter().map(value).collect::<Vec<_>>())
     }
 
     /// The relative discretisation error of `output` (`None` where not estimated).

@@ -11,9 +11,9 @@
 //! [`SAFETY_OBSERVED`] `|d_f| / (2^p - 1)`. Otherwise (oscillating, stagnating or
 //! superconvergent levels, or only two) no order is trusted: the extrapolation takes `p = 1`,
 //! whose correction `d_f` bounds the error of any order at least 1, and the error is
-//! [`SAFETY_UNTRUSTED`] times the larger of `|d_f|` and `|d_(f-1)| / 2` (what first order
-//! predicts from the level below: an oscillation's amplitude, or a difference that vanished by
-//! chance).
+//! [`SAFETY_UNTRUSTED`] times `|d_f|` (Roache's two-grid factor), or, where the levels
+//! oscillate or the finest difference vanished, times the larger of `|d_f|` and
+//! `|d_(f-1)| / 2` (what first order predicts from the level below).
 //!
 //! The discretisation is second order where the grid resolves the pressure peak's flank and
 //! falls to first order where it does not (docs/ACCURACY_NOTES.md, "the bisection"); the
@@ -111,9 +111,13 @@ pub fn estimate(values: &[f64]) -> Option<ErrorEstimate> {
     };
     let last = diffs[diffs.len() - 1];
     let correction = last / (2f64.powf(order_used) - 1.0);
-    let size = match (accepted, diffs.len()) {
-        (None, n) if n >= 2 => correction.abs().max(0.5 * diffs[n - 2].abs()),
-        _ => correction.abs(),
+    // An oscillation's amplitude, or a finest difference that vanished by chance, is
+    // bounded by what first order predicts from the difference below.
+    let n = diffs.len();
+    let size = if accepted.is_none() && n >= 2 && (oscillating || last == 0.0) {
+        correction.abs().max(0.5 * diffs[n - 2].abs())
+    } else {
+        correction.abs()
     };
     Some(ErrorEstimate {
         extrapolated: values[values.len() - 1] + correction,
@@ -164,9 +168,11 @@ mod tests {
         assert!((e.error - SAFETY_UNTRUSTED * 0.1).abs() < 1e-12);
         let e = estimate(&[1.0, 1.4, 1.3]).unwrap();
         assert!((e.error - SAFETY_UNTRUSTED * 0.2).abs() < 1e-12);
-        // Superconvergent by chance (order 5): not trusted either.
+        // Superconvergent by chance (order 5): not trusted either, bounded by the finest
+        // difference alone (the coarsest level is the one out of range).
         let e = estimate(&[1.0, 1.32, 1.33]).unwrap();
         assert!(!e.oscillating && !e.trusted());
+        assert!((e.error - SAFETY_UNTRUSTED * 0.01).abs() < 1e-12);
         // Two levels: no order at all.
         let e = estimate(&[2.0, 2.1]).unwrap();
         assert_eq!(e.order, None);
