@@ -10,7 +10,7 @@ use repro::physics::film::hc_nijenbanning;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::solver::grid::Domain;
-use repro::solver::output::{Method, SolveError};
+use repro::solver::output::{LadderStop, Method, SolveError};
 use repro::solver::point::{solve, Params, PointSolution};
 use repro::solver::subnormal;
 
@@ -641,7 +641,11 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
         .errors
         .as_ref()
         .expect("a case is solved with its error estimate");
-    assert_eq!(e.levels.len(), 3, "{what}: three levels, {:?}", e.levels);
+    assert!(
+        e.levels.len() >= 2,
+        "{what}: at least two levels, {:?}",
+        e.levels
+    );
     let outputs = [
         ("Hc", e.h_central, s.film.h_central, fine.film.h_central),
         ("Hmin", e.h_min, s.film.h_min, fine.film.h_min),
@@ -671,21 +675,30 @@ fn the_error_estimate_brackets_level_9_on_a_light_contact() {
     // Fig. 6 case 23 (5P4E, 40 C, 1 GPa, 12 m/s; M 4.76, L 57) on its wide domain with the
     // far field: first-order convergence, a few per cent at level 7.
     let c = physical("5p4e", 40.0, 1e9, 12.0, 0.005, 6e6, 1.0);
-    assert_estimate_brackets_level_9(&c, "Fig. 6 case 23");
+    let s = assert_estimate_brackets_level_9(&c, "Fig. 6 case 23");
+    // Three levels, and an order observed for each output (1.33, 1.66, 1.09).
+    let e = s.errors.unwrap();
+    assert_eq!(e.levels.len(), 3);
+    assert!(e.mu_bar_sliding.unwrap().trusted() && e.h_central.unwrap().trusted());
 }
 
 #[test]
 fn the_error_estimate_brackets_level_9_on_the_table_4_case() {
     // The Appendix case (M 1 739, L 14.8): the middle of the envelope.
     let c = Table4Case::shipped().unwrap().case;
-    assert_estimate_brackets_level_9(&c, "Table 4");
+    let s = assert_estimate_brackets_level_9(&c, "Table 4");
+    assert_eq!(s.errors.unwrap().levels.len(), 3);
 }
 
 #[test]
 fn the_error_estimate_brackets_level_9_on_a_heavy_contact() {
     // Fig. 4 case 140 (mineral oil A, 60 C, 3 GPa, 2 m/s; M 11 070): its film closes at
-    // level 7, so it is solved at level 8 and estimated from levels 6-8.
+    // level 7, so it is solved at level 8; its level 6 closes at the centre, so the estimate
+    // reads levels 7-8 alone and is the first-order bound.
     let c = physical("mineral-oil-a", 60.0, 3e9, 2.0, 0.005, 6e6, 1.0);
     let s = assert_estimate_brackets_level_9(&c, "M 11 070");
     assert_eq!(s.info.level, 8);
+    let e = s.errors.unwrap();
+    assert_eq!(e.stopped, Some(LadderStop::FilmClosed { level: 6 }));
+    assert!(!e.mu_bar_sliding.unwrap().trusted());
 }
