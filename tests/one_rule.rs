@@ -333,3 +333,36 @@ fn every_path_starts_a_family_member_from_its_base_alike() {
         "warm {by_solve:?} vs cold {cold:?}"
     );
 }
+
+#[test]
+fn the_papers_setup_beside_fig6_differs_from_the_rule_in_edge_domain_and_region_alone() {
+    use repro::pipeline::job::{point_jobs_in, Setup};
+    use repro::solver::grid::Domain;
+    use repro::solver::point::{Edge, FrictionRegion};
+    let sweep = repro::paper::cases::shipped_sweep("fig6").unwrap();
+    // Case 23 (M 4.76): the rule puts it on a wide domain with the far field.
+    let case = sweep.cases[22].clone();
+    let rule = &point_jobs(std::slice::from_ref(&case), 7).unwrap()[0];
+    let paper = &point_jobs_in(std::slice::from_ref(&case), 7, Setup::Paper).unwrap()[0];
+    // The rule's jobs are the ones every other path builds (same key), the paper's setup
+    // has a key of its own (its solves never stand in for the rule's in the cache).
+    assert_eq!(
+        rule.job.key,
+        point_jobs_in(std::slice::from_ref(&case), 7, Setup::Rule).unwrap()[0]
+            .job
+            .key
+    );
+    assert_ne!(rule.job.key, paper.job.key);
+    assert_ne!(rule.params.domain, Domain::default());
+    assert_eq!(paper.params.domain, Domain::default());
+    assert_eq!(paper.params.edge, Edge::Zero);
+    assert_eq!(paper.params.friction_region, FrictionRegion::Domain);
+    // Nothing else differs.
+    let back = repro::solver::point::Params {
+        domain: rule.params.domain,
+        edge: Edge::FarField,
+        friction_region: FrictionRegion::LoadedFilm,
+        ..paper.params.clone()
+    };
+    assert_eq!(back, rule.params);
+}

@@ -3,7 +3,7 @@
 //! thread count (rayon), results collected in job order.
 
 use super::cache::{Cache, Lookup, Stamp};
-use super::job::{point_jobs, Job};
+use super::job::{point_jobs_in, Job, Setup};
 use super::offline::{missing, missing_message};
 use super::outcome::{CaseOutcome, SolvedCase};
 use crate::physics::case::{Case, Problem};
@@ -264,7 +264,7 @@ pub struct PointRun {
     pub case: Case,
     /// The dimensionless problem (groups, tau_c).
     pub problem: Problem,
-    /// The solver parameters it was solved with (the one rule's, [`point_jobs`]).
+    /// The solver parameters it was solved with (the one rule's, [`super::job::point_jobs`]).
     pub params: point::Params,
     /// Solved or failed.
     pub outcome: CaseOutcome,
@@ -283,7 +283,7 @@ impl PointRun {
     }
 }
 
-/// Runs `cases` at `level` (see [`point_jobs`]) through the cache as `policy` says (see
+/// Runs `cases` at `level` (see [`super::job::point_jobs`]) through the cache as `policy` says (see
 /// [`run_jobs`]); `target` names them in errors. Cases that do not resolve into a problem
 /// are an error for the whole run.
 pub fn run_cases(
@@ -294,7 +294,18 @@ pub fn run_cases(
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
 ) -> Result<Vec<PointRun>, String> {
-    let planned = point_jobs(cases, level)?;
+    run_cases_in(target, (cases, level, Setup::Rule), policy, progress, warn)
+}
+
+/// [`run_cases`] for `cases` at `level` in `setup` ([`Setup`]).
+pub fn run_cases_in(
+    target: &str,
+    (cases, level, setup): (&[Case], u32, Setup),
+    policy: CachePolicy,
+    progress: &(dyn Fn(RunProgress) + Sync),
+    warn: &(dyn Fn(String) + Sync),
+) -> Result<Vec<PointRun>, String> {
+    let planned = point_jobs_in(cases, level, setup)?;
     let jobs: Vec<Job> = planned.iter().map(|p| p.job.clone()).collect();
     let finished = run_jobs(target, &jobs, policy, progress, warn)?;
     Ok(cases

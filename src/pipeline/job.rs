@@ -11,7 +11,8 @@ use crate::physics::case::{Case, CaseError, CaseForm, Problem};
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{ThermalContact, TARGET_INPUTS};
-use crate::solver::point::{Params, Start};
+use crate::solver::grid::Domain;
+use crate::solver::point::{Edge, FrictionRegion, Params, Start};
 use crate::solver::thermal::point_thermal;
 use crate::solver::{line, point};
 
@@ -170,6 +171,34 @@ pub fn point_job(
     })
 }
 
+/// The setup a point case is solved in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Setup {
+    /// THE rule ([`Params::for_problem`]): the case's domain, the flooded far field, the
+    /// loaded film's friction. Every result of the product.
+    Rule,
+    /// The paper's: its domain (`-2.5..1.5 x -2..2`), `P = 0` on the edge and Eq. (8) over
+    /// every pressurised node, on top of the rule; drawn beside Fig. 6 to show what the
+    /// paper's domain did to its light contacts (docs/RESULTS.md).
+    Paper,
+}
+
+impl Setup {
+    /// The solver parameters of `problem` at `level` in this setup.
+    pub fn params(self, problem: &Problem, level: u32) -> Params {
+        let rule = Params::for_problem(problem, level);
+        match self {
+            Setup::Rule => rule,
+            Setup::Paper => Params {
+                domain: Domain::default(),
+                edge: Edge::Zero,
+                friction_region: FrictionRegion::Domain,
+                ..rule
+            },
+        }
+    }
+}
+
 /// A point case's job, with the problem and parameters it solves.
 #[derive(Debug, Clone)]
 pub struct PointJob {
@@ -185,6 +214,11 @@ pub struct PointJob {
 /// ([`Params::for_problem`]), labelled `case 1`, `case 2`, ... in order. Cases that do not
 /// resolve into a problem are an error (the sweep file is wrong).
 pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<PointJob>, String> {
+    point_jobs_in(cases, level, Setup::Rule)
+}
+
+/// The jobs of `cases` at `level` in `setup` (as [`point_jobs`] for [`Setup::Rule`]).
+pub fn point_jobs_in(cases: &[Case], level: u32, setup: Setup) -> Result<Vec<PointJob>, String> {
     let lubricants = LubricantTable::table1();
     cases
         .iter()
@@ -192,7 +226,7 @@ pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<PointJob>, String> {
         .map(|(i, c)| {
             let problem =
                 Problem::from_case(c, &lubricants).map_err(|e| format!("case {}: {e}", i + 1))?;
-            let params = Params::for_problem(&problem, level);
+            let params = setup.params(&problem, level);
             let label = format!("case {} ({})", i + 1, case_label(c, params.level));
             let job = point_job(c, &problem, params.clone(), label, &lubricants)
                 .map_err(|e| format!("case {}: base: {e}", i + 1))?;

@@ -6,20 +6,21 @@ use super::cache::key_of;
 use crate::physics::case::{Case, Physics};
 use crate::physics::thermal::{TARGET_INPUTS, THERMAL_REVISION};
 use crate::solver::line;
-use crate::solver::point::{Params, SOLVER_REVISION};
+use crate::solver::point::{Edge, FrictionRegion, Params, SOLVER_REVISION};
 use serde::Serialize;
 
 /// The revision of the line-contact numerics, part of every line-contact cache key.
 pub use crate::solver::line::SOLVER_REVISION as LINE_SOLVER_REVISION;
 
 /// The cache key of a case at the given solver parameters: the case, the parameters a target
-/// can set (level, domain, rolling friction, the film check), the solver revision, which is
+/// can set (level, domain, rolling friction, the film check, and the edge and friction region
+/// where they are not the rule's), the solver revision, which is
 /// raised whenever a default parameter or the numerics change, the thermal post-process's
 /// inputs and revision, and the key of the base it starts from
 /// ([`super::base::base_of`]), whose solution is part of its arithmetic.
 pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String {
     let d = &params.domain;
-    key_of(&(
+    let key = (
         case,
         params.level,
         (d.x_start, d.x_end, d.y_half),
@@ -28,7 +29,15 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
         SOLVER_REVISION,
         (THERMAL_REVISION, TARGET_INPUTS),
         base_key,
-    ))
+    );
+    // The edge and the friction's region, where they are not the rule's (the paper's setup
+    // beside Fig. 6): the rule's keys stay as they were.
+    if params.edge == Edge::FarField && params.friction_region == FrictionRegion::LoadedFilm {
+        key_of(&key)
+    } else {
+        let setup = format!("{:?} {:?}", params.edge, params.friction_region);
+        key_of(&(key, setup))
+    }
 }
 
 /// The cache key of a line contact at the given solver parameters (the parameters a target

@@ -13,8 +13,8 @@ use crate::paper::cases::shipped_sweep;
 use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
 use crate::physics::case::Case;
 use crate::pipeline::context::Context;
-use crate::pipeline::executor::{run_cases, PointRun, RunProgress};
-use crate::pipeline::job::{point_jobs, Job};
+use crate::pipeline::executor::{run_cases, run_cases_in, PointRun, RunProgress};
+use crate::pipeline::job::{point_jobs, point_jobs_in, Job, Setup};
 use crate::pipeline::keys::LINE_SOLVER_REVISION;
 use crate::pipeline::outcome::{CaseOutcome, Output, SolvedCase};
 use crate::pipeline::provenance::{Provenance, SUFFIX};
@@ -118,6 +118,9 @@ pub struct SweepFigure {
     pub claim: &'static str,
     /// Adds the line contacts of Table 3 (Fig. 7).
     pub line_contacts: bool,
+    /// Draws beside its cases the paper's setup ([`Setup::Paper`]) where it differs from the
+    /// rule's by more than the error bar (Fig. 6).
+    pub paper_setup: bool,
 }
 
 /// Fig. 1: total friction against the paper's severity group.
@@ -133,6 +136,7 @@ pub const FIG1: SweepFigure = SweepFigure {
     level: 6,
     claim: "friction collapses on one curve for S-bar^(1/4) M L^3 >= 1e4, scattered below",
     line_contacts: false,
+    paper_setup: false,
 };
 
 /// Fig. 2: total friction against `tau_c`.
@@ -177,6 +181,7 @@ pub const FIG6: SweepFigure = SweepFigure {
     name: "fig6",
     description: "Sliding mu-bar vs tau_c, 5P4E, Table 2 grid (243 cases)",
     sweep: "fig6",
+    paper_setup: true,
     ..FIG3
 };
 
@@ -218,7 +223,16 @@ impl Artefact for SweepFigure {
 
     /// Its sweep's cases, and for Fig. 7 the line contacts.
     fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
-        let mut jobs = study_jobs(&self.sweep()?, Some(self.level), ctx)?;
+        let sweep = self.sweep()?;
+        let mut jobs = study_jobs(&sweep, Some(self.level), ctx)?;
+        if self.paper_setup {
+            let (cases, level) = selection(&sweep, Some(self.level), ctx);
+            jobs.extend(
+                point_jobs_in(&cases, level, Setup::Paper)?
+                    .into_iter()
+                    .map(|p| p.job),
+            );
+        }
         if self.line_contacts {
             jobs.extend(
                 line::table3_jobs(LINE_LEVEL)?
@@ -249,6 +263,10 @@ impl Artefact for SweepFigure {
             (None, Vec::new())
         };
         let heading = name.replace("fig", "Fig. ");
+        let beside = Beside {
+            fitted: extra,
+            paper_setup: self.paper_setup,
+        };
         let (mut report, runs) = sweep_figure(
             name,
             &heading,
@@ -256,7 +274,7 @@ impl Artefact for SweepFigure {
             self.plot,
             Some(self.level),
             ctx,
-            &extra,
+            &beside,
         )?;
         if let Some(line) = &line {
             let csv = line::line_csv(line, LINE_LEVEL);
@@ -411,10 +429,50 @@ fn severity_summary(runs: &[PointRun]) -> String {
 /// A user's own sweep (`repro run`), drawn and fitted as Figs. 3-7: sliding `mu-bar` against
 /// `tau_c`, files named after `stem`.
 pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<TargetReport, String> {
-    let (mut report, runs) = sweep_figure(stem, stem, sweep, Plot::SLIDING, None, ctx, &[])?;
+    let beside = Beside {
+        fitted: Vec::new(),
+        paper_setup: false,
+    };
+    let (mut report, runs) = sweep_figure(stem, stem, sweep, Plot::SLIDING, None, ctx, &beside)?;
     write_provenance(stem, &mut report, &runs, None, ctx)?;
     report.paper_claim = SLIDING_CLAIM.into();
     Ok(report)
+}
+
+/// Series a sweep figure draws beside its own cases.
+struct Beside {
+    /// Drawn and measured against Eq. (13) with them (Fig. 7's line contacts).
+    fitted: Vec<Series>,
+    /// Also solve the cases in the paper's setup and draw them where they differ
+    /// ([`SweepFigure::paper_setup`]); not measured.
+    paper_setup: bool,
+}
+
+/// The cases of `paper` (the paper's setup) whose plotted friction differs from the rule's
+/// solve of the same case (`runs`, in the same order) by more than its error bar (or, where
+/// not estimated, by more than 1 %), as one series, and how many they are.
+fn paper_setup_series(runs: &[PointRun], paper: &[PointRun], plot: Plot) -> (Series, usize) {
+    let points: Vec<(f64, f64)> = runs
+        .iter()
+        .zip(paper)
+        .filter_map(|(r, p)| {
+            let (x, y) = plot.xy(r)?;
+            let (_, y_paper) = plot.xy(p)?;
+            let bar = r
+                .solved()
+                .and_then(|s| plot.y_error(s))
+                .unwrap_or(0.01 * y.abs());
+            ((y_paper - y).abs() > bar).then_some((x, y_paper))
+        })
+        .collect();
+    let shown = points.len();
+    let series = Series {
+        label: "paper's setup (P = 0, its domain)".into(),
+        points,
+        marker: Marker::Circle,
+        ..Series::default()
+    };
+    (series, shown)
 }
 
 /// Runs `sweep` at the context's level (else the sweep's, else `default_level`), writes
@@ -427,9 +485,10 @@ fn sweep_figure(
     plot: Plot,
     default_level: Option<u32>,
     ctx: &Context,
-    extra: &[Series],
+    beside: &Beside,
 ) -> Result<(TargetReport, Vec<PointRun>), String> {
     let (runs, level) = run_sweep(stem, sweep, default_level, ctx)?;
+    let extra = &beside.fitted;
     for (i, r) in runs.iter().enumerate() {
         if let CaseOutcome::Failed(f) = &r.outcome {
             (ctx.warn)(format!(
@@ -455,12 +514,32 @@ fn sweep_figure(
     };
     measures.extend(plot.error_summary(&runs).map(Measure::DiscretisationError));
     let mut files = vec![csv];
+    let mut drawn = extra.clone();
+    let mut note = None;
+    if beside.paper_setup {
+        let (cases, _) = selection(sweep, default_level, ctx);
+        let progress = |p: RunProgress| (ctx.progress)(&format!("{stem}-paper-setup"), p);
+        let paper = run_cases_in(
+            stem,
+            (&cases, level, Setup::Paper),
+            ctx.cache_policy(),
+            &progress,
+            ctx.warn,
+        )?;
+        files.push(ctx.write(&format!("{stem}-paper-setup.csv"), &rows::csv(&paper, plot))?);
+        let (series, shown) = paper_setup_series(&runs, &paper, plot);
+        note = Some(format!(
+            "\"paper's setup\": P = 0 on the paper's domain, Eq. (8) over it, for the {shown} \
+             cases where it differs from the flooded contact by more than the error bar"
+        ));
+        drawn.push(series);
+    }
     if let Some(svg) = picture::svg(
         stem,
         &format!("{heading} — {}", sweep.title),
         &runs,
         plot,
-        extra,
+        (&drawn, note),
     )? {
         files.push(ctx.write(&format!("{stem}.svg"), &svg)?);
     }

@@ -45,13 +45,13 @@ fn series_key(name: &str, run: &PointRun) -> String {
 
 /// Renders figure `name` with `title` from its runs, each solved case's point as `plot` draws
 /// it with its discretisation error as an error bar, and `extra` series (the line contacts of
-/// Fig. 7) drawn after them.
+/// Fig. 7, the paper's setup beside Fig. 6) drawn after them, with their note.
 pub fn svg(
     name: &str,
     title: &str,
     runs: &[PointRun],
     plot: Plot,
-    extra: &[Series],
+    (extra, beside_note): (&[Series], Option<String>),
 ) -> Result<Option<String>, String> {
     let mut keys: Vec<String> = Vec::new();
     let mut series: Vec<Series> = Vec::new();
@@ -107,12 +107,14 @@ pub fn svg(
     } else {
         "characteristic shear stress τ̄_{c}"
     };
-    let note = (failed > 0).then(|| {
+    let failed_note = (failed > 0).then(|| {
         format!(
             "{failed} of {} cases failed (not converged or film collapse); not shown",
             runs.len()
         )
     });
+    let notes: Vec<String> = failed_note.into_iter().chain(beside_note).collect();
+    let note = (!notes.is_empty()).then(|| notes.join("; "));
     let fig = Figure {
         title: title.to_string(),
         x_label: x_label.into(),
