@@ -10,7 +10,7 @@ use repro::physics::film::hc_nijenbanning;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
 use repro::solver::grid::Domain;
-use repro::solver::output::{LadderStop, Method, SolveError};
+use repro::solver::output::{LadderStop, Method, Output, SolveError};
 use repro::solver::point::{solve, Params, PointSolution};
 use repro::solver::subnormal;
 
@@ -647,17 +647,24 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
         e.levels
     );
     let outputs = [
-        ("Hc", e.h_central, s.film.h_central, fine.film.h_central),
-        ("Hmin", e.h_min, s.film.h_min, fine.film.h_min),
+        (
+            "Hc",
+            Output::HCentral,
+            s.film.h_central,
+            fine.film.h_central,
+        ),
+        ("Hmin", Output::HMin, s.film.h_min, fine.film.h_min),
         (
             "mu-bar",
-            e.mu_bar_sliding,
+            Output::MuBarSliding,
             s.friction.sliding,
             fine.friction.sliding,
         ),
     ];
-    for (name, estimate, value, level_9) in outputs {
-        let estimate = estimate.unwrap_or_else(|| panic!("{what}: no estimate of {name}"));
+    for (name, output, value, level_9) in outputs {
+        let estimate = e
+            .estimate(output)
+            .unwrap_or_else(|| panic!("{what}: no estimate of {name}"));
         let distance = (value - level_9).abs();
         assert!(
             estimate.error >= distance,
@@ -679,7 +686,8 @@ fn the_error_estimate_brackets_level_9_on_a_light_contact() {
     // Three levels, and an order observed for each output (1.33, 1.66, 1.09).
     let e = s.errors.unwrap();
     assert_eq!(e.levels.len(), 3);
-    assert!(e.mu_bar_sliding.unwrap().trusted() && e.h_central.unwrap().trusted());
+    let trusted = |o| e.estimate(o).unwrap().trusted();
+    assert!(trusted(Output::MuBarSliding) && trusted(Output::HCentral));
 }
 
 #[test]
@@ -700,5 +708,5 @@ fn the_error_estimate_brackets_level_9_on_a_heavy_contact() {
     assert_eq!(s.info.level, 8);
     let e = s.errors.unwrap();
     assert_eq!(e.stopped, Some(LadderStop::FilmClosed { level: 6 }));
-    assert!(!e.mu_bar_sliding.unwrap().trusted());
+    assert!(!e.estimate(Output::MuBarSliding).unwrap().trusted());
 }

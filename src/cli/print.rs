@@ -5,7 +5,7 @@ use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use repro::paper::TargetReport;
 use repro::physics::case::Physics;
 use repro::solver::output::{
-    Film, Friction, Info, LadderStop, OutputErrors, Progress, SolveError, Step,
+    Film, Friction, Info, LadderStop, Output, OutputErrors, Progress, SolveError, Step,
 };
 use repro::solver::richardson::ErrorEstimate;
 use serde_json::{json, Map, Value};
@@ -71,21 +71,29 @@ impl SolveReport<'_> {
             out.insert(format!("{key}_error"), error);
             out.insert(format!("{key}_extrapolated"), extrapolated);
         }
-        out.insert("discretisation_error".into(), to_json(e));
+        let mut whole = to_json(e);
+        if let Value::Object(m) = &mut whole {
+            for (key, output) in [
+                ("h_central", Output::HCentral),
+                ("h_min", Output::HMin),
+                ("mu_bar_sliding", Output::MuBarSliding),
+                ("mu_bar_total", Output::MuBarTotal),
+            ] {
+                m.insert(key.into(), to_json(&e.estimate(output)));
+            }
+        }
+        out.insert("discretisation_error".into(), whole);
         Value::Object(out)
     }
 
     /// The three estimated outputs: their key, estimate and the factor from the solver's
     /// unit to the key's (Moes units for the films).
-    fn estimates<'e>(
-        &self,
-        e: &'e OutputErrors,
-    ) -> [(&'static str, Option<&'e ErrorEstimate>, f64); 3] {
+    fn estimates(&self, e: &OutputErrors) -> [(&'static str, Option<ErrorEstimate>, f64); 3] {
         let moes = self.film.hc_moes / self.film.h_central;
         [
-            ("hc_moes", e.h_central.as_ref(), moes),
-            ("hmin_moes", e.h_min.as_ref(), moes),
-            ("mu_bar_sliding", e.mu_bar_sliding.as_ref(), 1.0),
+            ("hc_moes", e.estimate(Output::HCentral), moes),
+            ("hmin_moes", e.estimate(Output::HMin), moes),
+            ("mu_bar_sliding", e.estimate(Output::MuBarSliding), 1.0),
         ]
     }
 

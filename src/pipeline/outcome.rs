@@ -1,10 +1,9 @@
 //! What a solve yields, as cached: the numbers of a converged case ([`SolvedCase`]), or the
 //! typed reason it failed ([`Failure`]). Failures are results too: cached, counted and shown.
 
-use crate::solver::output::{
-    Film, Friction, Info, LevelValues, OutputErrors, SolveError, StartKind,
-};
-use crate::solver::richardson::{estimate, ErrorEstimate};
+pub use crate::solver::output::Output;
+use crate::solver::output::{Film, Friction, Info, OutputErrors, SolveError, StartKind};
+use crate::solver::richardson::ErrorEstimate;
 use crate::solver::thermal::Thermal;
 use serde::{Deserialize, Serialize};
 use std::fmt;
@@ -73,18 +72,10 @@ impl SolvedCase {
         }
     }
 
-    /// The estimate of the central film, the minimum film, sliding or total `mu-bar`, made
-    /// from the cached levels' values by the estimator as it is now (the levels are what the
-    /// solve computed; the estimate is arithmetic on them).
+    /// The estimate of the central film, the minimum film, sliding or total `mu-bar`
+    /// ([`OutputErrors::estimate`]).
     pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
-        let levels = &self.errors.as_ref()?.levels;
-        let value = |v: &LevelValues| match output {
-            Output::HCentral => v.h_central,
-            Output::HMin => v.h_min,
-            Output::MuBarSliding => v.mu_bar_sliding,
-            Output::MuBarTotal => v.mu_bar_total,
-        };
-        estimate(&levels.iter().map(value).collect::<Vec<_>>())
+        self.errors.as_ref()?.estimate(output)
     }
 
     /// The relative discretisation error of `output` (`None` where not estimated).
@@ -111,19 +102,6 @@ impl SolvedCase {
 
 /// A solution's parts: film, friction, how it went and the outputs' discretisation error.
 pub type Parts<'a> = (&'a Film, &'a Friction, &'a Info, Option<&'a OutputErrors>);
-
-/// An output that carries a discretisation error ([`SolvedCase::estimate`]).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Output {
-    /// Central film.
-    HCentral,
-    /// Minimum film.
-    HMin,
-    /// Sliding `mu-bar`.
-    MuBarSliding,
-    /// Sliding plus rolling `mu-bar` (Figs. 1-2).
-    MuBarTotal,
-}
 
 /// Why a solve failed, in a short stable name (no numbers, the same on every machine) for
 /// tables and snapshots: the variant of the solver's [`SolveError`].

@@ -63,20 +63,39 @@ pub struct LevelValues {
     pub mu_bar_total: f64,
 }
 
-/// The discretisation error of the outputs, from the finest level and the coarser levels
-/// solved on their own ([`crate::solver::richardson`]); estimates in the solver's unit.
+impl LevelValues {
+    /// The value of `output`.
+    pub fn get(&self, output: Output) -> f64 {
+        match output {
+            Output::HCentral => self.h_central,
+            Output::HMin => self.h_min,
+            Output::MuBarSliding => self.mu_bar_sliding,
+            Output::MuBarTotal => self.mu_bar_total,
+        }
+    }
+}
+
+/// An output that carries a discretisation error ([`OutputErrors::estimate`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Output {
+    /// Central film.
+    HCentral,
+    /// Minimum film.
+    HMin,
+    /// Sliding `mu-bar`.
+    MuBarSliding,
+    /// Sliding plus rolling `mu-bar` (Figs. 1-2).
+    MuBarTotal,
+}
+
+/// What the discretisation error of the outputs is made from: the finest level and the
+/// coarser levels solved on their own. The estimates are arithmetic on these values
+/// ([`OutputErrors::estimate`], [`crate::solver::richardson`]), made when read, so a cached
+/// solve is estimated by the estimator as it is now.
 #[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct OutputErrors {
     /// The levels read, coarse to fine (the last is the solution's).
     pub levels: Vec<LevelValues>,
-    /// Central film (`None` with fewer than two levels).
-    pub h_central: Option<ErrorEstimate>,
-    /// Minimum film.
-    pub h_min: Option<ErrorEstimate>,
-    /// Sliding `mu-bar`.
-    pub mu_bar_sliding: Option<ErrorEstimate>,
-    /// Sliding plus rolling `mu-bar`.
-    pub mu_bar_total: Option<ErrorEstimate>,
     /// Wall time of the coarser levels' solves, s: what the estimate costs.
     pub seconds: f64,
     /// Why the ladder of coarser levels ended before [`crate::solver::point::Params::error_levels`]
@@ -102,18 +121,25 @@ pub enum LadderStop {
 }
 
 impl OutputErrors {
-    /// The estimates of `levels` (consecutive, coarse to fine).
+    /// The record of `levels` (consecutive, coarse to fine), solved in `seconds`.
     pub fn of(levels: Vec<LevelValues>, seconds: f64) -> Self {
-        let of = |f: fn(&LevelValues) -> f64| estimate(&levels.iter().map(f).collect::<Vec<_>>());
         OutputErrors {
-            h_central: of(|v| v.h_central),
-            h_min: of(|v| v.h_min),
-            mu_bar_sliding: of(|v| v.mu_bar_sliding),
-            mu_bar_total: of(|v| v.mu_bar_total),
             levels,
             seconds,
             stopped: None,
         }
+    }
+
+    /// The discretisation error of `output`, in the solver's unit (`None` with fewer than
+    /// two levels).
+    pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
+        estimate(
+            &self
+                .levels
+                .iter()
+                .map(|v| v.get(output))
+                .collect::<Vec<_>>(),
+        )
     }
 }
 

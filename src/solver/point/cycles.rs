@@ -3,7 +3,8 @@
 
 use super::level::{self, LOAD};
 use super::multigrid::Hierarchy;
-use super::{friction, stopping, warm, Edge, Params, FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
+use super::stopping::{self, Known};
+use super::{friction, Edge, Params, FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use crate::solver::output::{mean_change, Progress, Step};
 
 /// When a run of cycles counts as stalled (see [`Params::stall_cycles`],
@@ -106,7 +107,7 @@ pub(super) fn converge_by_cycles(
     k: usize,
     params: &Params,
     windows: StallWindows,
-    warm_stop: Option<&warm::WarmStop>,
+    known: &Known,
     observe: &mut dyn FnMut(&Progress),
 ) -> Cycles {
     let mut history = Vec::new();
@@ -114,11 +115,8 @@ pub(super) fn converge_by_cycles(
     let mut changes = Vec::new();
     let mut best = State::of(mg, k);
     let mut best_residual = f64::INFINITY;
-    // A warm start's own outputs count as the first entry of their history ([`warm`]).
-    let mut outputs = match warm_stop {
-        Some(w) => stopping::OutputHistory::from_start(w.outputs),
-        None => stopping::OutputHistory::default(),
-    };
+    // A warm start's own outputs count as the first entry of their history ([`super::warm`]).
+    let mut outputs = stopping::OutputHistory::new(known);
     // A fitted far field is refitted once at the start and then each time the cycles have
     // converged with the edge as it stands, until its amplitude settles (refitting before
     // every cycle moved the edge under the cycles: the Table 4 case stalled at a residual
@@ -159,21 +157,14 @@ pub(super) fn converge_by_cycles(
             break;
         }
         if params.output_tolerance > 0.0 {
-            let film = friction::film(level, 1.0);
-            let mu_bar =
-                friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
-            outputs.push(
-                film.h_central,
-                film.h_min,
-                mu_bar.sliding,
-                mu_bar.rolling.unwrap_or(0.0),
-            );
+            let [h_central, h_min, sliding, rolling] = stop_outputs(mg, k, params);
+            outputs.push(h_central, h_min, sliding, rolling);
         }
         // With the outputs' rule on, only settled outputs end the cycles: a residual below
         // its tolerance, or a pressure change below its own, can come while an output is
         // still far off (a side-lobe minimum film of a heavy contact).
         let rule = params.output_tolerance > 0.0;
-        let settled = rule && outputs.relative_error() < params.output_tolerance;
+        let settled = rule && outputs.settled(params.output_tolerance);
         let still = if rule {
             settled
         } else {
@@ -184,7 +175,7 @@ pub(super) fn converge_by_cycles(
             && residual >= params.tolerance
             && params.newton_steps > 0
             && !stopping::residual_falls(&history)
-            && !warm_stop.is_some_and(|w| w.accepts(residual))
+            && !known.start.is_some_and(|w| w.accepts(residual))
         {
             if history.len() < stopping::FALL_WINDOW {
                 // Too few cycles to tell a fixed point from a start (the first cycles after
@@ -205,7 +196,10 @@ pub(super) fn converge_by_cycles(
                     // The edge moved: the outputs' history and the residual's best start
                     // again (the residual at the inlet corner jumps with the edge).
                     refits += 1;
-                    outputs = stopping::OutputHistory::default();
+                    outputs = stopping::OutputHistory::new(&Known {
+                        start: None,
+                        ..*known
+                    });
                     best_residual = f64::INFINITY;
                     continue;
                 }
@@ -230,6 +224,20 @@ pub(super) fn converge_by_cycles(
 
 /// Residual growth over the best cycle that stops the solve as diverged.
 const DIVERGENCE_FACTOR: f64 = 1e3;
+
+/// Central and minimum film, sliding and rolling `mu-bar` (0 where it is not computed) of
+/// level `k`: what the outputs' stopping rule reads ([`stopping::OutputHistory`]).
+pub(super) fn stop_outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 4] {
+    let level = &mg.levels[k];
+    let film = friction::film(level, 1.0);
+    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
+    [
+        film.h_central,
+        film.h_min,
+        mu.sliding,
+        mu.rolling.unwrap_or(0.0),
+    ]
+}
 
 /// The outputs a far field's refits are judged by: central and minimum film and sliding
 /// friction of level `k`.

@@ -1,10 +1,11 @@
 //! The far field's self-consistency: the edge put anew for the converged film constant and
 //! the solve converged again until the edge settles.
 
-use super::cycles::{converge_by_cycles, StallWindows};
+use super::cycles::{converge_by_cycles, stop_outputs, StallWindows};
 use super::finish::{finish, polish_and_finish, Work};
 use super::multigrid::Hierarchy;
-use super::{friction, warm, Edge, Params};
+use super::stopping::{Known, WarmStop};
+use super::{Edge, Params};
 use crate::solver::output::{Method, Progress, SolveError};
 
 /// Rounds of the far field's self-consistency on level `k` (the top, converged by
@@ -38,17 +39,12 @@ pub(super) fn settle_edge(
             return true;
         }
         let (residual, _) = mg.residual_norm(k);
-        let level = &mg.levels[k];
-        let film = friction::film(level, 1.0);
-        let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
-        let stop = warm::WarmStop {
-            outputs: [
-                film.h_central,
-                film.h_min,
-                mu.sliding,
-                mu.rolling.unwrap_or(0.0),
-            ],
-            residual,
+        let known = Known {
+            start: Some(WarmStop {
+                outputs: stop_outputs(mg, k, params),
+                residual,
+            }),
+            finer: None,
         };
         mg.make_top(k);
         if method == Method::Cycles {
@@ -56,7 +52,7 @@ pub(super) fn settle_edge(
                 stall: params.stall_cycles,
                 early: 0,
             };
-            let run = converge_by_cycles(mg, k, params, windows, Some(&stop), observe);
+            let run = converge_by_cycles(mg, k, params, windows, &known, observe);
             *cycles += run.history.len();
             history.extend(&run.history);
             if run.converged {

@@ -5,6 +5,7 @@ use super::cycles::{
     converge_by_cycles, edge_outputs, level_number, outputs_settled, StallWindows, State,
 };
 use super::multigrid::Hierarchy;
+use super::stopping::Known;
 use super::{level, newton, Edge, Params, FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use crate::solver::output::{mean_change, Progress, Step};
 
@@ -123,7 +124,7 @@ pub(super) fn grid_sequence(
             stall: params.sequence_stall_cycles,
             early: params.early_stall_cycles,
         };
-        let run = converge_by_cycles(mg, first, params, windows, None, observe);
+        let run = converge_by_cycles(mg, first, params, windows, &Known::default(), observe);
         converged = run.converged;
         if !converged {
             run.best.restore(mg, first);
@@ -165,7 +166,7 @@ pub(super) fn polish_and_finish(
         stall: params.sequence_stall_cycles,
         early: params.early_stall_cycles,
     };
-    let run = converge_by_cycles(mg, k, params, windows, None, observe);
+    let run = converge_by_cycles(mg, k, params, windows, &Known::default(), observe);
     history.extend(&run.history);
     if run.converged {
         return true;

@@ -15,11 +15,11 @@
 //! the ladder ([`LadderStop`]); the estimate reads the levels above it: with two, the
 //! untrusted first-order bound, with one, none.
 
-use super::cycles::{converge_by_cycles, level_number, StallWindows};
+use super::cycles::{converge_by_cycles, level_number, stop_outputs, StallWindows};
 use super::edge::settle_edge;
 use super::finish::{finish, polish_and_finish, Work};
 use super::multigrid::Hierarchy;
-use super::warm::WarmStop;
+use super::stopping::{Known, WarmStop};
 use super::{friction, Params, MIN_LEVEL};
 use crate::solver::output::{LadderStop, LevelValues, Method, OutputErrors, Progress};
 use std::time::Instant;
@@ -64,15 +64,28 @@ fn inject(mg: &mut Hierarchy, k: usize) {
     }
 }
 
+/// Relaxations per visit of the coarsest grid when a coarser level of the ladder is the top
+/// (the top level's cycles keep [`Params::coarsest_sweeps`], 50). The coarsest visit is a
+/// fixed cost per cycle, 50 sweeps of 33 x 33 nodes: about 11 % of a level-7 cycle, but 36 %
+/// of a level-6 and 80 % of a level-5 one (node counts). The parameter's own study found 50
+/// sweeps instead of 100 a third cheaper at level 5 for the same cycles; 20 instead of 50 on
+/// the ladder of Fig. 3's 125 cases at level 7 took 0.4 more cycles per level-6 and 0.5 per
+/// level-5 solve and cut the ladder's time by a quarter (18.6 s to 14.0 s); 10 sweeps took
+/// 3.4 and 6.3 more cycles and saved nothing.
+const LADDER_COARSEST_SWEEPS: usize = 20;
+
 /// Converges level `k` as the top, the way the top level converged (`method`: cycles, with
 /// the finish where they stall, or the Newton-Krylov finish directly), from `warm` (the base's
 /// solution on this level, or the cold solve's full-multigrid state) where it fits, else from
-/// the injected finer solution. Returns the residual it converged to, `None` where it failed.
+/// the injected finer solution; its cycles stop where the outputs' algebraic error is a small
+/// share of their distance to `finer`, the next finer level's outputs
+/// ([`super::stopping::Known::finer`]). Returns the residual it converged to, `None` where it
+/// failed.
 fn converge_level(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
-    method: Method,
+    (method, finer): (Method, [f64; 4]),
     warm: Option<&CoarseSolution>,
     observe: &mut dyn FnMut(&Progress),
 ) -> Option<f64> {
@@ -86,12 +99,15 @@ fn converge_level(
     }
     mg.make_top(k);
     // A converged start's outputs and residual stop its cycles as a warm start's do.
-    let stop = warm.and_then(|w| {
-        Some(WarmStop {
-            outputs: outputs(mg, k, params),
-            residual: w.residual?,
-        })
-    });
+    let known = Known {
+        start: warm.and_then(|w| {
+            Some(WarmStop {
+                outputs: stop_outputs(mg, k, params),
+                residual: w.residual?,
+            })
+        }),
+        finer: Some(finer),
+    };
     let mut history = Vec::new();
     let mut work = Work::default();
     let mut converged = false;
@@ -100,7 +116,7 @@ fn converge_level(
             stall: params.stall_cycles,
             early: 0,
         };
-        let run = converge_by_cycles(mg, k, params, windows, stop.as_ref(), observe);
+        let run = converge_by_cycles(mg, k, params, windows, &known, observe);
         history = run.history;
         converged = run.converged;
         if !converged && run.non_finite.is_none() {
@@ -135,18 +151,6 @@ fn converge_level(
     .then(|| mg.residual_norm(k).0)
 }
 
-/// Central and minimum film, sliding and rolling `mu-bar` of level `k`: what a warm start's
-/// stopping rule compares with.
-fn outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 4] {
-    let v = values(mg, k, params);
-    [
-        v.h_central,
-        v.h_min,
-        v.mu_bar_sliding,
-        v.mu_bar_total - v.mu_bar_sliding,
-    ]
-}
-
 /// The outputs of the converged top level of `mg` and of up to `params.error_levels` coarser
 /// levels converged on their own (from `warm`, the base's, where they are of the same
 /// levels), their estimates, and the coarser solutions. The film constant is restored after.
@@ -163,6 +167,7 @@ pub(super) fn output_errors(
     let mut solutions = Vec::new();
     let mut stopped = None;
     let h0 = mg.h0;
+    let sweeps = mg.set_coarsest_sweeps(LADDER_COARSEST_SWEEPS);
     for step in 1..=params.error_levels as usize {
         // The hierarchy's coarsest level is solved by relaxation alone: never a top.
         let Some(k) = top.checked_sub(step).filter(|&k| k >= 1) else {
@@ -173,7 +178,14 @@ pub(super) fn output_errors(
         if level < MIN_LEVEL {
             break;
         }
-        let Some(residual) = converge_level(mg, k, params, method, start, observe) else {
+        let finer = &levels[0];
+        let finer = [
+            finer.h_central,
+            finer.h_min,
+            finer.mu_bar_sliding,
+            finer.mu_bar_total,
+        ];
+        let Some(residual) = converge_level(mg, k, params, (method, finer), start, observe) else {
             stopped = Some(LadderStop::NotConverged { level });
             break;
         };
@@ -197,6 +209,7 @@ pub(super) fn output_errors(
         });
     }
     mg.h0 = h0;
+    mg.set_coarsest_sweeps(sweeps);
     (
         OutputErrors {
             stopped,

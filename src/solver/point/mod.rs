@@ -46,11 +46,12 @@ pub(crate) use level::LOAD;
 use multigrid::Hierarchy;
 pub use params::{Edge, Params};
 use std::time::Instant;
+use stopping::Known;
 pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-19";
+pub const SOLVER_REVISION: &str = "point-20";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -163,7 +164,7 @@ fn converge_cold(
         stall: params.stall_cycles,
         early: params.early_stall_cycles,
     };
-    let finest = converge_by_cycles(&mut mg, top, params, windows, None, observe);
+    let finest = converge_by_cycles(&mut mg, top, params, windows, &Known::default(), observe);
     let cycles = finest.history.len();
     history.extend(&finest.history);
     let mut method = Method::Cycles;
@@ -362,7 +363,8 @@ fn solve_with(
                 stall: params.stall_cycles,
                 early: 0,
             };
-            let run = converge_by_cycles(&mut mg, k, params, windows, None, &mut observe);
+            let run =
+                converge_by_cycles(&mut mg, k, params, windows, &Known::default(), &mut observe);
             cycles += run.history.len();
             history.extend(&run.history);
             if run.converged {

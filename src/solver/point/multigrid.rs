@@ -59,6 +59,11 @@ impl Hierarchy {
         self.levels.len() - 1
     }
 
+    /// Sets the relaxations per visit of the coarsest grid; returns the previous number.
+    pub fn set_coarsest_sweeps(&mut self, sweeps: usize) -> usize {
+        std::mem::replace(&mut self.params.coarsest_sweeps, sweeps)
+    }
+
     pub fn finest(&self) -> &Level {
         self.levels
             .last()

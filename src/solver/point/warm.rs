@@ -13,13 +13,14 @@
 //! Two stopping details make the warm start pay: the start's own outputs are the first entry
 //! of the output history (a converged state is a point of the sequence the estimate reads,
 //! so three cycles can end the solve instead of five), and settled outputs are accepted
-//! while the residual is at most [`WARM_RESIDUAL_FACTOR`] times the base's accepted one even
-//! where it no longer falls (a warm start begins near its fixed point; without it the
+//! while the residual is at most a few times the base's accepted one even
+//! where it no longer falls ([`super::stopping::WarmStop`]: a warm start begins near its fixed point; without it the
 //! heaviest members, M 11 070, took a Newton-Krylov detour and were slower than cold).
 
-use super::cycles::{converge_by_cycles, StallWindows, State};
+use super::cycles::{converge_by_cycles, stop_outputs, StallWindows, State};
 use super::finish::{finish, polish_and_finish, Work};
-use super::{friction, hierarchy, Converged, Hierarchy, Params, MAX_LEVEL};
+use super::stopping::{Known, WarmStop};
+use super::{hierarchy, Converged, Hierarchy, Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{Method, Progress, StartKind};
@@ -70,26 +71,6 @@ impl Start {
     }
 }
 
-/// The residual a warm solve's settled outputs are accepted at, as a multiple of the base's
-/// accepted residual (module documentation).
-const WARM_RESIDUAL_FACTOR: f64 = 2.0;
-
-/// What the warm cycles' stopping rule knows of the start.
-pub(super) struct WarmStop {
-    /// The start's central and minimum film, sliding and rolling `mu-bar`.
-    pub outputs: [f64; 4],
-    /// The base's accepted residual.
-    pub residual: f64,
-}
-
-impl WarmStop {
-    /// Whether settled outputs at `residual` end the cycles although the residual no longer
-    /// falls.
-    pub fn accepts(&self, residual: f64) -> bool {
-        residual <= WARM_RESIDUAL_FACTOR * self.residual
-    }
-}
-
 /// `params` on `level` (a base refined to a finer level than asked), with the refinements
 /// left to it.
 pub(super) fn params_at(params: &Params, level: u32) -> Params {
@@ -121,17 +102,12 @@ pub(super) fn converge(
     mg.make_top(top);
     let (start_residual, _) = mg.residual_norm(top);
     let at_start = State::of(&mg, top);
-    let level = &mg.levels[top];
-    let film = friction::film(level, 1.0);
-    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
-    let stop = WarmStop {
-        outputs: [
-            film.h_central,
-            film.h_min,
-            mu.sliding,
-            mu.rolling.unwrap_or(0.0),
-        ],
-        residual: start.residual,
+    let known = Known {
+        start: Some(WarmStop {
+            outputs: stop_outputs(&mg, top, params),
+            residual: start.residual,
+        }),
+        finer: None,
     };
     let mut history = Vec::new();
     let mut work = Work::default();
@@ -142,7 +118,7 @@ pub(super) fn converge(
             stall: params.stall_cycles,
             early: 0,
         };
-        let run = converge_by_cycles(&mut mg, top, params, windows, Some(&stop), observe);
+        let run = converge_by_cycles(&mut mg, top, params, windows, &known, observe);
         cycles = run.history.len();
         history.extend(&run.history);
         if run.converged {
