@@ -32,7 +32,7 @@ pub struct Params {
     pub domain: Domain,
     /// The condition on the domain's edge ([`Edge`]). Default [`Edge::Zero`], the paper's
     /// `P = 0`, for studies of the numerics on a fixed domain; a case is solved with the
-    /// fitted far field ([`Params::for_problem`]).
+    /// far field of the a-priori amplitude, [`Edge::FarField`] ([`Params::for_problem`]).
     pub edge: Edge,
     /// Relaxations before coarsening. Default 2.
     pub pre_sweeps: usize,
