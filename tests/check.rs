@@ -1,18 +1,12 @@
 //! Snapshot checks: every target agrees with the committed baselines, a 1 % change or a changed
 //! Eyring stress is caught, and neither the thread count nor a rerun changes a result.
 
-use crate::support::repro;
+use crate::support::{repro, scratch};
 use repro::paper::figures::{rows, Plot};
 use repro::pipeline::executor::{run_cases, CachePolicy, PointRun};
 use repro::pipeline::snapshot::compare;
 use repro::pipeline::sweep::Sweep;
 use std::path::PathBuf;
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("repro-test-{name}-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
-}
 
 /// The CI promise: `make test` recomputes every target at the snapshot profile and finds it
 /// equal to the committed baselines.
@@ -26,7 +20,7 @@ fn every_target_agrees_with_its_snapshot() {
 /// Editing one baseline value by 1 % makes the check fail with a message naming it.
 #[test]
 fn a_one_percent_edit_of_a_baseline_fails_naming_the_value() {
-    let dir = scratch("edited");
+    let dir = scratch("check", "edited");
     let base = std::fs::read_to_string(
         PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("snapshots/table4.csv"),
     )
@@ -112,8 +106,9 @@ fn thread_count_and_reruns_do_not_change_results() {
     let one = csv_of(&sweep, 1);
     let two = csv_of(&sweep, 2);
     let again = csv_of(&sweep, 2);
-    assert!(compare("t", &one, &two).is_empty());
-    assert!(compare("t", &two, &again).is_empty());
+    // Identical to the last digit, not merely within the check's tolerance.
+    assert_eq!(one, two, "one thread against two");
+    assert_eq!(two, again, "a rerun");
     assert!(one.lines().skip(1).all(|l| l.ends_with("solved")), "{one}");
 }
 

@@ -10,7 +10,7 @@
 //! same parameters on the same problem are the same arithmetic, and the JSON and the cache
 //! print floats in shortest round-trip form, so any difference is a different path.
 
-use crate::support::{repro, repro_in};
+use crate::support::{repro, repro_in, scratch};
 use repro::paper::accuracy::cases::{
     accuracy_cases, pipeline_params, AccuracyProblem, LevelOutputs,
 };
@@ -20,7 +20,7 @@ use repro::pipeline::cache::{Cache, Lookup};
 use repro::pipeline::job::point_jobs;
 use repro::pipeline::outcome::{CaseOutcome, SolvedCase};
 use repro::pipeline::sweep::Sweep;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 const LEVEL: u32 = 5;
 
@@ -91,13 +91,6 @@ l = 10.0
 s_bar = 0.1
 tau0_hat = 2.0
 "#;
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("repro-one-rule-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
-}
 
 /// What the paths are compared on: central and minimum film (`H = h/c` and Moes) and sliding
 /// `mu-bar`, equal when their bits are (`f64::to_bits`; printed as numbers when not).
@@ -201,7 +194,7 @@ fn predict(flags: &[&str]) -> Outputs {
 /// `repro run FILE --level 5` of a one-point study, read back from its cache entry (the
 /// CSV rounds to 7 digits; the entry holds the record's full bits).
 fn study(name: &str, text: &str) -> Outputs {
-    let dir = scratch(name);
+    let dir = scratch("one_rule", name);
     let file = dir.join(format!("{name}.toml"));
     std::fs::write(&file, text).expect("write the study");
     let level = LEVEL.to_string();

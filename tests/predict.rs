@@ -1,8 +1,7 @@
 //! `repro predict` (Eq. 14 for a user's contact) and `repro fig8` (measured data on the
 //! mastercurve): outputs, warnings, and errors that name the flag, file, row and column.
 
-use crate::support::{appendix_problem, args, repro, repro_in, with_flags, WORKED_FLAGS};
-use std::path::PathBuf;
+use crate::support::{appendix_problem, args, repro, repro_in, scratch, with_flags, WORKED_FLAGS};
 
 /// `repro predict` at the Appendix (Table 4) case.
 fn worked() -> Vec<&'static str> {
@@ -181,16 +180,10 @@ fn predict_bad_flags_are_named() {
 }
 
 /// A fresh folder for one test (its own name, the process id).
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("repro-test-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 #[test]
 fn fig8_without_data_says_so() {
-    let dir = scratch("fig8-empty");
+    let dir = scratch("predict", "fig8-empty");
     let (code, out, err) = repro_in(&dir, &["fig8", "--out", "out"]);
     assert_eq!(code, 0, "{err}");
     assert!(
@@ -213,7 +206,7 @@ const HEADER: &str = "series,source,contact,rx_m,ry_m,e_prime_pa,ph_pa,temperatu
 
 #[test]
 fn fig8_transforms_every_dataset_and_names_bad_rows() {
-    let dir = scratch("fig8-data");
+    let dir = scratch("predict", "fig8-data");
     std::fs::create_dir_all(dir.join("cases/fig8")).unwrap();
     // Synthetic rows (this test's own numbers, not measurements).
     std::fs::write(

@@ -3,7 +3,7 @@
 //! run; an offline build of a partial cache names every missing case; merges refuse a
 //! different result; `repro slurm` writes the scripts of the same run.
 
-use crate::support::repro;
+use crate::support::{repro, scratch};
 use repro::paper::cases::shipped_sweep;
 use repro::pipeline::cache::{Cache, Stamp};
 use repro::pipeline::job::{point_jobs, Job};
@@ -16,13 +16,6 @@ use std::process::Command;
 /// Level of the round trip: the point contacts' coarsest working level, so that the four
 /// runs of Fig. 7 take seconds; byte identity does not depend on the level.
 const LEVEL: &str = "4";
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("repro-shards-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
-}
 
 fn s(p: &Path) -> &str {
     p.to_str().expect("utf-8 path")
@@ -61,7 +54,7 @@ fn keys(cache: &Path) -> Vec<String> {
 
 #[test]
 fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
-    let dir = scratch("fig7");
+    let dir = scratch("shards", "fig7");
     let (one_cache, one_out) = (dir.join("one-cache"), dir.join("one-out"));
     let (code, _, err) = fig7(&["--cache", s(&one_cache), "--out", s(&one_out)], &[]);
     assert_eq!(code, 0, "{err}");
@@ -188,7 +181,7 @@ fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
 
 #[test]
 fn offline_on_a_partial_cache_names_every_missing_case() {
-    let dir = scratch("partial");
+    let dir = scratch("shards", "partial");
     let (shard, out) = (dir.join("shard-1"), dir.join("out"));
     let (code, _, err) = fig7(&["--shard", "1/3", "--cache", s(&shard)], &[]);
     assert_eq!(code, 0, "{err}");
@@ -217,7 +210,7 @@ fn offline_on_a_partial_cache_names_every_missing_case() {
 
 #[test]
 fn slurm_writes_an_array_a_dependent_assembly_and_says_how_to_submit() {
-    let dir = scratch("slurm");
+    let dir = scratch("shards", "slurm");
     let (code, out, err) = repro(&[
         "slurm",
         "fig7",

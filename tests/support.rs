@@ -2,8 +2,17 @@
 
 use repro::paper::table4::Table4Case;
 use repro::physics::case::Problem;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::Command;
+
+/// An empty scratch folder for test `name` of module `module`, under the system's temporary
+/// folder and named with the process, so that parallel tests and runs do not share one.
+pub fn scratch(module: &str, name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("repro-{module}-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
 
 /// Runs `repro args` in `dir`: exit code (-1 if killed), stdout, stderr.
 pub fn repro_in(dir: &Path, args: &[&str]) -> (i32, String, String) {
