@@ -1,6 +1,7 @@
 //! What a solve yields, as cached: the numbers of a converged case ([`SolvedCase`]), or the
 //! typed reason it failed ([`Failure`]). Failures are results too: cached, counted and shown.
 
+use crate::physics::thermal::ThermalError;
 pub use crate::solver::output::Output;
 use crate::solver::output::{Film, Friction, Info, OutputErrors, SolveError, StartKind};
 use crate::solver::richardson::ErrorEstimate;
@@ -43,6 +44,10 @@ pub struct SolvedCase {
     /// post-process failed.
     #[serde(default)]
     pub thermal: Vec<Thermal>,
+    /// Why the thermal post-process failed, where it did (then `thermal` is empty). Absent
+    /// from the cached payload otherwise, so entries without it read as before.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_failure: Option<ThermalFailure>,
     /// The outputs' discretisation error, where the solve estimated it (films in `H`).
     #[serde(default)]
     pub errors: Option<Box<OutputErrors>>,
@@ -68,6 +73,7 @@ impl SolvedCase {
             load_error: info.load_error,
             start: info.start,
             thermal: Vec::new(),
+            thermal_failure: None,
             errors: errors.cloned().map(Box::new),
         }
     }
@@ -176,6 +182,33 @@ impl Failure {
     }
 }
 
+/// A thermal post-process that failed on a converged case, as cached: a short stable name
+/// of the reason (for tables and snapshots) and the post-process's message.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ThermalFailure {
+    /// What went wrong, from the error's variant: `input`, `stationary surface`, `no film`,
+    /// `stress`.
+    pub kind: String,
+    /// The post-process's message.
+    pub error: String,
+}
+
+impl ThermalFailure {
+    /// The failure of a thermal error.
+    pub fn of(error: &ThermalError) -> Self {
+        let kind = match error {
+            ThermalError::Input { .. } => "input",
+            ThermalError::StationarySurface { .. } => "stationary surface",
+            ThermalError::NoFilm { .. } => "no film",
+            ThermalError::Stress { .. } => "stress",
+        };
+        ThermalFailure {
+            kind: kind.to_string(),
+            error: error.to_string(),
+        }
+    }
+}
+
 /// A case's outcome: solved, or why not.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum CaseOutcome {
@@ -210,10 +243,16 @@ impl CaseOutcome {
         }
     }
 
-    /// The status a table shows: `solved`, or `failed: <kind>`.
+    /// The status a table shows: `solved` (`solved, thermal failed: <kind>` where the
+    /// thermal post-process failed), or `failed: <kind>`.
     pub fn status(&self) -> String {
-        self.failure()
-            .map_or_else(|| "solved".to_string(), Failure::status)
+        match self {
+            CaseOutcome::Solved(s) => match &s.thermal_failure {
+                Some(t) => format!("solved, thermal failed: {}", t.kind),
+                None => "solved".to_string(),
+            },
+            CaseOutcome::Failed(f) => f.status(),
+        }
     }
 }
 
