@@ -42,7 +42,7 @@ pub struct Table4Case {
 impl Table4Case {
     /// The shipped definition.
     pub fn shipped() -> Result<Self, PipelineError> {
-        toml::from_str(CASE_TOML).map_err(|e| PipelineError::parse("cases/table4.toml", e))
+        toml::from_str(CASE_TOML).map_err(|e| PipelineError::parse("cases/table4.toml", None, e))
     }
 
     /// The Appendix case as a dimensionless problem (Table 1's lubricants).

@@ -184,27 +184,31 @@ impl Cache {
         let entry: EntryFile = serde_json::from_str(&text).map_err(|e| {
             PipelineError::parse(
                 path.display().to_string(),
+                None,
                 format!("not a cache entry: {e}"),
             )
         })?;
         if entry.key != key {
             return Err(PipelineError::parse(
                 path.display().to_string(),
-                format!("field key: {} does not match the file name", entry.key),
+                Some("key"),
+                format!("{} does not match the file name", entry.key),
             ));
         }
         if EntryFile::checksum(&entry.payload, entry.stamp.as_deref()) != entry.sha256 {
             return Err(PipelineError::parse(
                 path.display().to_string(),
-                "field sha256: hash mismatch",
+                Some("sha256"),
+                "hash mismatch",
             ));
         }
-        let stamp = match &entry.stamp {
-            Some(s) => Some(serde_json::from_str(s).map_err(|e| {
-                PipelineError::parse(path.display().to_string(), format!("field stamp: {e}"))
-            })?),
-            None => None,
-        };
+        let stamp =
+            match &entry.stamp {
+                Some(s) => Some(serde_json::from_str(s).map_err(|e| {
+                    PipelineError::parse(path.display().to_string(), Some("stamp"), e)
+                })?),
+                None => None,
+            };
         Ok(Some(RawEntry {
             key: entry.key,
             payload: entry.payload,
@@ -222,7 +226,8 @@ impl Cache {
                 Ok(v) => Lookup::Hit(v, raw.stamp),
                 Err(e) => Lookup::Corrupt(PipelineError::parse(
                     self.path(key).display().to_string(),
-                    format!("field payload: {e}"),
+                    Some("payload"),
+                    e,
                 )),
             },
         }

@@ -48,12 +48,13 @@ pub enum PipelineError {
         error: std::io::Error,
     },
     /// A file that does not parse or holds a wrong field (TOML, a cache entry).
-    #[error("{file}: {message}")]
+    #[error("{file}: {}{message}", field.map(|f| format!("field {f}: ")).unwrap_or_default())]
     Parse {
         /// The file.
         file: String,
-        /// The field where known, and what is wrong (the parser's message gives line and
-        /// column).
+        /// The field, where known.
+        field: Option<&'static str>,
+        /// What is wrong (a parser's message gives line and column).
         message: String,
     },
     /// A picture that could not be drawn.
@@ -105,10 +106,15 @@ impl PipelineError {
         }
     }
 
-    /// The parse error of `file`.
-    pub fn parse(file: impl Into<String>, message: impl ToString) -> Self {
+    /// The parse error of `file`, `field` where known.
+    pub fn parse(
+        file: impl Into<String>,
+        field: Option<&'static str>,
+        message: impl ToString,
+    ) -> Self {
         PipelineError::Parse {
             file: file.into(),
+            field,
             message: message.to_string(),
         }
     }
@@ -118,6 +124,49 @@ impl PipelineError {
         PipelineError::Plot {
             file: file.into(),
             error,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each message keeps the text the strings had, and says its cause once when the CLI
+    /// prints the chain (`{:#}`).
+    #[test]
+    fn messages_name_the_file_and_field_and_say_the_cause_once() {
+        let cases = [
+            (
+                PipelineError::io(
+                    "cannot write out/fig4.csv",
+                    "out/fig4.csv",
+                    std::io::Error::other("disk full"),
+                ),
+                "cannot write out/fig4.csv: disk full",
+            ),
+            (
+                PipelineError::parse("ab/abcd.json", Some("sha256"), "hash mismatch"),
+                "ab/abcd.json: field sha256: hash mismatch",
+            ),
+            (
+                PipelineError::parse("cases/table4.toml", None, "expected `=`"),
+                "cases/table4.toml: expected `=`",
+            ),
+            (
+                PipelineError::case(
+                    "case 3",
+                    CaseError::Field {
+                        field: "ph",
+                        message: "must be positive".into(),
+                    },
+                ),
+                "case 3: ph: must be positive",
+            ),
+        ];
+        for (error, text) in cases {
+            assert_eq!(error.to_string(), text);
+            assert_eq!(format!("{:#}", anyhow::Error::from(error)), text);
         }
     }
 }

@@ -316,4 +316,36 @@ mod tests {
             r#"{"Failed":{"kind":"film collapse","error":"film thickness became non-positive","residual_history":[0.5]}}"#
         );
     }
+
+    /// A failed thermal post-process is a status on the case's row, kept in the cache; an
+    /// entry without one keeps the payload it had.
+    #[test]
+    fn a_thermal_failure_is_a_status_and_absent_otherwise() {
+        let mut solved = SolvedCase {
+            h_central: 0.5,
+            h_min: 0.3,
+            hc_moes: 2.0,
+            hmin_moes: 1.2,
+            mu_bar_sliding: 6.0,
+            mu_bar_rolling: None,
+            level: 5,
+            cycles: 10,
+            newton_steps: 0,
+            residual: 1e-9,
+            load_error: 1e-6,
+            start: StartKind::Cold,
+            thermal: Vec::new(),
+            thermal_failure: None,
+            errors: None,
+        };
+        let plain = serde_json::to_string(&CaseOutcome::Solved(solved.clone())).unwrap();
+        assert!(!plain.contains("thermal_failure"), "{plain}");
+        assert_eq!(CaseOutcome::Solved(solved.clone()).status(), "solved");
+        solved.thermal_failure = Some(ThermalFailure::of(&ThermalError::NoFilm { h_m: -1e-9 }));
+        let outcome = CaseOutcome::Solved(solved);
+        assert_eq!(outcome.status(), "solved, thermal failed: no film");
+        let text = serde_json::to_string(&outcome).unwrap();
+        let back: CaseOutcome = serde_json::from_str(&text).unwrap();
+        assert_eq!(back, outcome, "{text}");
+    }
 }
