@@ -12,14 +12,13 @@ use crate::paper::artefact::{
 use crate::paper::cases::shipped_sweep;
 use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
 use crate::physics::case::Case;
-use crate::pipeline::context::Context;
-use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{run_cases, run_cases_in, PointRun, RunProgress};
 use crate::pipeline::job::{point_jobs, point_jobs_in, Job, Setup};
 use crate::pipeline::keys::LINE_SOLVER_REVISION;
 use crate::pipeline::outcome::{CaseOutcome, Output, SolvedCase};
 use crate::pipeline::provenance::{Provenance, SUFFIX};
 use crate::pipeline::sweep::Sweep;
+use crate::pipeline::{context::Context, error::PipelineError};
 use crate::plot::{Marker, Series};
 use crate::solver::point::SOLVER_REVISION;
 use line::LineRun;
