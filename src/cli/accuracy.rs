@@ -14,7 +14,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
     if args.repeats == 0 {
         bail!("--repeats: must be at least 1");
     }
-    let cases = accuracy::cases::accuracy_cases(!args.no_line).map_err(anyhow::Error::msg)?;
+    let cases = accuracy::cases::accuracy_cases(!args.no_line)?;
     let quiet = args.quiet;
     let mut progress = |c: &accuracy::AccuracyCase, r: &accuracy::LevelRun| {
         if quiet {
@@ -39,10 +39,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
             "accuracy_levels.csv",
             accuracy::files::recommendations_csv(&recs),
         ),
-        (
-            "accuracy.svg",
-            accuracy::picture::svg(&studies).map_err(anyhow::Error::msg)?,
-        ),
+        ("accuracy.svg", accuracy::picture::svg(&studies)?),
     ];
     for (name, text) in &files {
         let path = args.out.join(name);

@@ -21,7 +21,7 @@ fn run_merge(args: &MergeArgs) -> Result<bool> {
         if !src.is_dir() {
             return Err(anyhow!("{}: not a cache folder", src.display()));
         }
-        let r = merge(&Cache::new(src), &dst).map_err(|e| anyhow!("{e}"))?;
+        let r = merge(&Cache::new(src), &dst)?;
         println!(
             "{}: {} copied, {} already there with the same result, {} refused",
             src.display(),

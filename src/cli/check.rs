@@ -20,8 +20,7 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
         args.targets
             .iter()
             .map(|n| known(n))
-            .collect::<Result<_, _>>()
-            .map_err(anyhow::Error::msg)?
+            .collect::<Result<_, _>>()?
     };
     let work = std::env::temp_dir().join(format!("repro-check-{}", std::process::id()));
     let target_args = TargetArgs {
@@ -38,13 +37,12 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
         ctx.stride = PROFILE_STRIDE;
         let ctx = &*ctx;
         let built = if all {
-            report::build_all(&artefacts, ctx).map_err(anyhow::Error::msg)?
+            report::build_all(&artefacts, ctx)?
         } else {
             artefacts
                 .iter()
                 .map(|a| paper::build(*a, ctx))
-                .collect::<Result<Vec<_>, _>>()
-                .map_err(anyhow::Error::msg)?
+                .collect::<Result<Vec<_>, _>>()?
         };
         if !args.quiet {
             for b in &built {
@@ -52,8 +50,7 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
             }
         }
         let files = snapshot::csv_files(built.iter().flat_map(|b| &b.files), all);
-        let diffs =
-            snapshot::check_files(&args.snapshots, &ctx.out, &files).map_err(anyhow::Error::msg)?;
+        let diffs = snapshot::check_files(&args.snapshots, &ctx.out, &files)?;
         for d in diffs.iter().take(SHOWN) {
             eprintln!("{}", d);
         }
@@ -61,7 +58,7 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
             eprintln!("... and {} more differences", diffs.len() - SHOWN);
         }
         if args.accept {
-            snapshot::accept(&args.snapshots, &ctx.out, &files).map_err(anyhow::Error::msg)?;
+            snapshot::accept(&args.snapshots, &ctx.out, &files)?;
             println!(
                 "accepted {} files into {} ({} differences above)",
                 files.len(),

@@ -5,7 +5,7 @@ use super::args::{
     BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, RheologyArg, SolveArgs, TargetArgs,
     ViscosityArg,
 };
-use anyhow::{anyhow, bail, Result};
+use anyhow::{anyhow, bail, Context as _, Result};
 use repro::physics::case::{
     Case, CaseError, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
@@ -324,7 +324,7 @@ pub fn context<'a>(
         check_level("--level", l)?;
     }
     if writes_outputs {
-        check_writable(&args.out).map_err(|e| anyhow!("--out: {e}"))?;
+        check_writable(&args.out).context("--out")?;
     }
     Ok(Context {
         out: args.out.clone(),

@@ -23,6 +23,7 @@ use repro::physics::case::{Case, CaseForm, LubricantSpec, Physics};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::traction::Load;
 use repro::pipeline::base::solve_case;
+use repro::pipeline::error::PipelineError;
 use repro::solver::point::{Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;
@@ -87,10 +88,11 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
             Some(&mut printer),
         ) {
             Ok(s) => Some((problem.clone(), s)),
-            Err(e) => {
+            Err(PipelineError::Solve(e)) => {
                 print_failure(&e);
                 return Ok(false);
             }
+            Err(e) => return Err(e.into()),
         }
     } else {
         None

@@ -4,7 +4,7 @@
 
 use super::args::TargetArgs;
 use super::progress::in_context_writing;
-use anyhow::{anyhow, bail, Result};
+use anyhow::{bail, Context as _, Result};
 use repro::pipeline::context::Context;
 use repro::pipeline::executor::{run_jobs, RunProgress};
 use repro::pipeline::job::Job;
@@ -20,9 +20,7 @@ pub type TargetJobs = Vec<(String, Job)>;
 /// none. `--offline` never shards.
 pub fn detect(args: &TargetArgs) -> Result<Option<Shard>> {
     if let Some(text) = &args.shard {
-        return Shard::parse(text)
-            .map(Some)
-            .map_err(|e| anyhow!("--shard: {e}"));
+        return Ok(Some(Shard::parse(text).context("--shard")?));
     }
     if args.offline {
         return Ok(None);
@@ -35,7 +33,7 @@ pub fn detect(args: &TargetArgs) -> Result<Option<Shard>> {
     let min = var("SLURM_ARRAY_TASK_MIN");
     let step = var("SLURM_ARRAY_TASK_STEP");
     let shard = Shard::from_slurm(&id, &count, min.as_deref(), step.as_deref())
-        .map_err(|e| anyhow!("Slurm array task: {e}"))?;
+        .context("Slurm array task")?;
     eprintln!(
         "Slurm array task {id} of {count} (from {}): solving shard {shard} of the cases (no --shard given)",
         min.as_deref().unwrap_or("?")
@@ -81,8 +79,7 @@ pub fn run(
         );
         let label = format!("shard {shard}");
         let progress = |p: RunProgress| (ctx.progress)(&label, p);
-        let done = run_jobs(&label, &jobs, ctx.cache_policy(), &progress, ctx.warn)
-            .map_err(|e| anyhow!(e))?;
+        let done = run_jobs(&label, &jobs, ctx.cache_policy(), &progress, ctx.warn)?;
         let (mut solved, mut cached, mut failed) = (0, 0, 0);
         for (job, d) in jobs.iter().zip(&done) {
             let status = match (&d.outcome, d.cached) {
@@ -134,5 +131,5 @@ pub fn check_offline(ctx: &Context, list: &TargetJobs) -> Result<()> {
     let Some(cache) = ctx.cache.as_ref() else {
         bail!("--offline needs the cache; drop --no-cache");
     };
-    check_complete(cache, list).map_err(|e| anyhow!(e))
+    Ok(check_complete(cache, list)?)
 }

@@ -3,7 +3,7 @@
 
 use super::args::{SlurmArgs, TargetArgs};
 use super::config::context;
-use anyhow::{anyhow, bail, Context as _, Result};
+use anyhow::{bail, Context as _, Result};
 use repro::paper::{self, REGISTRY};
 use repro::pipeline::csv::write_atomic;
 use repro::pipeline::slurm::{sh_quote, SlurmPlan};
@@ -56,10 +56,7 @@ pub fn run(args: &SlurmArgs) -> Result<bool> {
     // Shards take whole families (the cases that start from one base).
     let mut families = BTreeSet::new();
     for n in &names {
-        for j in paper::known(n)
-            .and_then(|a| a.jobs(&ctx))
-            .map_err(|e| anyhow!("{e}"))?
-        {
+        for j in paper::known(n).and_then(|a| a.jobs(&ctx))? {
             families.insert(j.family().to_string());
             keys.insert(j.key);
         }

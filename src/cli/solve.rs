@@ -13,6 +13,7 @@ use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::ShearLaw;
 use repro::pipeline::base::solve_case;
 use repro::pipeline::csv::{rows, write_atomic};
+use repro::pipeline::error::PipelineError;
 use repro::pipeline::label::case_label;
 use repro::solver::line::{self, LineSolution};
 use repro::solver::point::{self, PointSolution};
@@ -31,7 +32,7 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     let inputs = args.thermal.inputs()?;
     let mut printer = solve_progress(args.quiet);
     let solved = if args.cold {
-        point::solve(&problem, &params, Some(&mut printer))
+        point::solve(&problem, &params, Some(&mut printer)).map_err(PipelineError::from)
     } else {
         let quiet = args.quiet || args.json;
         let mut said = |b: &Case| {
@@ -50,10 +51,11 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     };
     let s = match solved {
         Ok(s) => s,
-        Err(e) => {
+        Err(PipelineError::Solve(e)) => {
             print_failure(&e);
             return Ok(false);
         }
+        Err(e) => return Err(e.into()),
     };
     if let Some(path) = &args.fields {
         let (g, p, h) = (&s.grid, &s.p, &s.h);

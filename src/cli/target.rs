@@ -6,7 +6,7 @@ use super::config::check_level;
 use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
 use super::shard::{self, TargetJobs};
-use anyhow::{anyhow, Context as _, Result};
+use anyhow::{Context as _, Result};
 use repro::paper::table4;
 use repro::paper::{self, Artefact, REGISTRY};
 use repro::pipeline::context::Context;
@@ -19,7 +19,7 @@ use std::time::Instant;
 
 /// Every solve of the targets `names` in the context, with its target.
 fn target_jobs(names: &[&str], ctx: &Context) -> Result<TargetJobs> {
-    paper::jobs_of(names, ctx).map_err(anyhow::Error::msg)
+    Ok(paper::jobs_of(names, ctx)?)
 }
 
 /// Before an offline build: every case of `names` must be in the cache.
@@ -51,7 +51,7 @@ pub fn one(artefact: &dyn Artefact, args: &TargetArgs) -> Result<bool> {
     }
     let built = in_context(args, true, |ctx| {
         check_offline(&[name], ctx)?;
-        paper::build(artefact, ctx).map_err(anyhow::Error::msg)
+        Ok(paper::build(artefact, ctx)?)
     })?;
     println!("{}", summary_line(&built));
     Ok(true)
@@ -67,7 +67,7 @@ pub fn all(args: &TargetArgs) -> Result<bool> {
     let built = in_context(args, true, |ctx| {
         check_offline(&names, ctx)?;
         solved = solve_together(&names, ctx)?;
-        report::build_all(REGISTRY, ctx).map_err(anyhow::Error::msg)
+        Ok(report::build_all(REGISTRY, ctx)?)
     })?;
     if let Some((cases, solved, seconds)) = solved {
         println!(
@@ -99,8 +99,7 @@ fn solve_together(names: &[&str], ctx: &Context) -> Result<Option<(usize, usize,
         .filter(|j| seen.insert(j.key.clone()))
         .collect();
     let progress = |p: RunProgress| (ctx.progress)("all", p);
-    let finished =
-        run_jobs("all", &jobs, ctx.cache_policy(), &progress, ctx.warn).map_err(|e| anyhow!(e))?;
+    let finished = run_jobs("all", &jobs, ctx.cache_policy(), &progress, ctx.warn)?;
     let solved = finished.iter().filter(|f| !f.cached).count();
     Ok(Some((jobs.len(), solved, start.elapsed().as_secs_f64())))
 }
@@ -115,7 +114,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         .unwrap_or_else(|| "study".into());
     let study_jobs = |ctx: &Context| -> Result<TargetJobs> {
         let jobs = paper::figures::study_jobs(&sweep, None, ctx)
-            .map_err(|e| anyhow!("{}: {e}", args.file.display()))?;
+            .with_context(|| args.file.display().to_string())?;
         Ok(jobs.into_iter().map(|j| (stem.clone(), j)).collect())
     };
     if let Some(s) = shard::detect(&args.target)? {
@@ -126,8 +125,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         if ctx.offline {
             shard::check_offline(ctx, &study_jobs(ctx)?)?;
         }
-        paper::figures::study(&stem, &sweep, ctx)
-            .map_err(|e| anyhow!("{}: {e}", args.file.display()))
+        paper::figures::study(&stem, &sweep, ctx).with_context(|| args.file.display().to_string())
     })?;
     built.seconds = t.elapsed().as_secs_f64();
     println!("{}", summary_line(&built).replacen("study", &stem, 1));
@@ -137,7 +135,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
 
 /// `repro table4`: false when a level failed.
 pub fn table4(args: &Table4Args) -> Result<bool> {
-    let spec = table4::Table4Case::shipped().map_err(anyhow::Error::msg)?;
+    let spec = table4::Table4Case::shipped()?;
     let levels = match &args.levels {
         Some(l) => l
             .iter()
@@ -146,7 +144,7 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
         None => spec.levels.clone(),
     };
     let mut printer = solve_progress(args.quiet);
-    let rows = table4::compute(&spec, &levels, |p| printer(p)).map_err(anyhow::Error::msg)?;
+    let rows = table4::compute(&spec, &levels, |p| printer(p))?;
     let path = args.out.join("table4.csv");
     write_atomic(&path, &table4::to_csv(&rows))
         .with_context(|| format!("--out: cannot write {}", path.display()))?;

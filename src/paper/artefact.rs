@@ -4,6 +4,7 @@
 
 use crate::paper::mastercurve::fit::{fit, Fit, FIT_TAU_C_MIN};
 use crate::pipeline::context::Context;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
 
 /// The paper's working level (256 x 256), the default of every computed figure.
@@ -34,11 +35,11 @@ pub trait Artefact: Sync {
 
     /// Every solve it needs in the context, as jobs (none for the emitted tables and Fig. 8):
     /// what a shard divides and what `--offline` must find in the cache.
-    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String>;
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, PipelineError>;
 
     /// Computes it (its solves through the context's cache) and writes its files into the
     /// context's output folder.
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String>;
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError>;
 }
 
 /// A claim of the paper measured on a target's results, for the report's table of claims

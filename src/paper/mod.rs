@@ -23,6 +23,7 @@ pub mod tables;
 pub mod thermal;
 
 use crate::pipeline::context::Context;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
 use crate::pipeline::provenance::{Provenance, SUFFIX};
 pub use artefact::{Artefact, TargetReport};
@@ -53,16 +54,19 @@ pub fn find(name: &str) -> Option<&'static dyn Artefact> {
 }
 
 /// The target named `name`, or an error that says which targets there are.
-pub fn known(name: &str) -> Result<&'static dyn Artefact, String> {
+pub fn known(name: &str) -> Result<&'static dyn Artefact, PipelineError> {
     find(name).ok_or_else(|| {
         let known: Vec<&str> = REGISTRY.iter().map(|a| a.name()).collect();
-        format!("unknown target '{name}' (known: {})", known.join(", "))
+        PipelineError::UnknownTarget {
+            name: name.to_string(),
+            known: known.join(", "),
+        }
     })
 }
 
 /// Every solve of the targets `names` in the context, each with its target: what a run of
 /// them shards and what `--offline` must find in the cache.
-pub fn jobs_of(names: &[&str], ctx: &Context) -> Result<Vec<(String, Job)>, String> {
+pub fn jobs_of(names: &[&str], ctx: &Context) -> Result<Vec<(String, Job)>, PipelineError> {
     let mut out = Vec::new();
     for n in names {
         let jobs = known(n)?.jobs(ctx)?;
@@ -73,7 +77,7 @@ pub fn jobs_of(names: &[&str], ctx: &Context) -> Result<Vec<(String, Job)>, Stri
 
 /// Builds `artefact`, timed, with its provenance sidecar (the targets that solve nothing get
 /// one that says so).
-pub fn build(artefact: &dyn Artefact, ctx: &Context) -> Result<TargetReport, String> {
+pub fn build(artefact: &dyn Artefact, ctx: &Context) -> Result<TargetReport, PipelineError> {
     let start = Instant::now();
     let mut report = artefact.build(ctx)?;
     if !report.files.iter().any(|f| f.ends_with(SUFFIX)) {

@@ -8,6 +8,7 @@ use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::cache::{key_of, Stamp};
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::Decimals;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
 use crate::pipeline::job::{thermal_contact, Job, Solve};
 use crate::pipeline::keys::case_key;
@@ -40,14 +41,14 @@ pub struct Table4Case {
 
 impl Table4Case {
     /// The shipped definition.
-    pub fn shipped() -> Result<Self, String> {
-        toml::from_str(CASE_TOML).map_err(|e| format!("cases/table4.toml: {e}"))
+    pub fn shipped() -> Result<Self, PipelineError> {
+        toml::from_str(CASE_TOML).map_err(|e| PipelineError::parse("cases/table4.toml", None, e))
     }
 
     /// The Appendix case as a dimensionless problem (Table 1's lubricants).
-    pub fn problem(&self) -> Result<Problem, String> {
+    pub fn problem(&self) -> Result<Problem, PipelineError> {
         Problem::from_case(&self.case, &LubricantTable::table1())
-            .map_err(|e| format!("cases/table4.toml: {e}"))
+            .map_err(|e| PipelineError::case("cases/table4.toml", e))
     }
 }
 
@@ -100,7 +101,7 @@ pub fn compute(
     spec: &Table4Case,
     levels: &[u32],
     mut observer: impl FnMut(&Progress),
-) -> Result<Vec<Table4Level>, String> {
+) -> Result<Vec<Table4Level>, PipelineError> {
     let problem = spec.problem()?;
     let mut rows = Vec::new();
     for &level in levels {
@@ -128,7 +129,7 @@ pub fn compute(
 /// (the Appendix case's row of Fig. 4 starts from its family's base and agrees within the
 /// output tolerance; `repro solve --cold` gives this table's bits). The key marks the
 /// table's own film check ([`params`]).
-pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, String> {
+pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, PipelineError> {
     let problem = spec.problem()?;
     let thermal = thermal_contact(&spec.case, &problem, &LubricantTable::table1()).map(Box::new);
     Ok(levels
@@ -162,7 +163,7 @@ pub fn compute_cached(
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Vec<Table4Level>, String> {
+) -> Result<Vec<Table4Level>, PipelineError> {
     let tau_c = spec.problem()?.tau_c();
     let jobs = jobs(spec, levels)?;
     let finished = run_jobs("table4", &jobs, policy, progress, warn)?;
@@ -195,12 +196,12 @@ impl Artefact for Table4 {
         "Grid convergence of Hc and sliding mu-bar for the Appendix case, levels 5-8, with wall times"
     }
 
-    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, PipelineError> {
         let spec = Table4Case::shipped()?;
         jobs(&spec, &spec.levels)
     }
 
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         let spec = Table4Case::shipped()?;
         // A grid-convergence table: always its own levels (cases/table4.toml), whatever
         // level the other targets are built at.

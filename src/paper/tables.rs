@@ -6,6 +6,7 @@ use crate::physics::case::{CaseForm, LubricantSpec, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::{num, rows};
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
 use serde::{Serialize, Serializer};
 
@@ -33,10 +34,10 @@ impl Artefact for Table1 {
     fn describe(&self) -> &'static str {
         "Lubricant properties alpha, eta0 at 40/60/100 C (from cases/lubricants.toml)"
     }
-    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, PipelineError> {
         Ok(Vec::new())
     }
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         table1(ctx)
     }
 }
@@ -51,10 +52,10 @@ impl Artefact for Table2 {
     fn describe(&self) -> &'static str {
         "Ranges of the operating parameters, with the derived M, L, S-bar ranges per lubricant"
     }
-    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, PipelineError> {
         Ok(Vec::new())
     }
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         table2(ctx)
     }
 }
@@ -69,10 +70,10 @@ impl Artefact for Table3 {
     fn describe(&self) -> &'static str {
         "The five contact-configuration cases, with M, L, S-bar, tau_c per geometry"
     }
-    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, PipelineError> {
         Ok(Vec::new())
     }
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         table3(ctx)
     }
 }
@@ -87,7 +88,7 @@ struct Table1Row<'a> {
     eta0_mpa_s: f64,
 }
 
-fn table1(ctx: &Context) -> Result<TargetReport, String> {
+fn table1(ctx: &Context) -> Result<TargetReport, PipelineError> {
     let lubs = LubricantTable::table1();
     let mut table = Vec::new();
     for (name, lub) in &lubs.0 {
@@ -151,7 +152,7 @@ struct Table2Row {
     tau_c_max: f64,
 }
 
-fn table2(ctx: &Context) -> Result<TargetReport, String> {
+fn table2(ctx: &Context) -> Result<TargetReport, PipelineError> {
     let lubs = LubricantTable::table1();
     let mut table = Vec::new();
     for fig in [&FIG4, &FIG5, &FIG6] {
@@ -160,7 +161,8 @@ fn table2(ctx: &Context) -> Result<TargetReport, String> {
             .cases
             .iter()
             .map(|c| {
-                Problem::from_case(c, &lubs).map_err(|e| format!("cases/{}.toml: {e}", fig.sweep))
+                Problem::from_case(c, &lubs)
+                    .map_err(|e| PipelineError::case(format!("cases/{}.toml", fig.sweep), e))
             })
             .collect::<Result<_, _>>()?;
         let lubricant = match &sweep.cases[0].spec {
@@ -227,12 +229,13 @@ struct Table3Row {
     tau_c: f64,
 }
 
-fn table3(ctx: &Context) -> Result<TargetReport, String> {
+fn table3(ctx: &Context) -> Result<TargetReport, PipelineError> {
     let sweep = FIG7.sweep()?;
     let lubs = LubricantTable::table1();
     let mut table = Vec::new();
     for c in &sweep.cases {
-        let p = Problem::from_case(c, &lubs).map_err(|e| format!("cases/fig7.toml: {e}"))?;
+        let p =
+            Problem::from_case(c, &lubs).map_err(|e| PipelineError::case("cases/fig7.toml", e))?;
         if let CaseForm::Physical(ph) = &c.spec {
             table.push(Table3Row {
                 d: ph.rx_m / ph.ry_m,

@@ -17,6 +17,7 @@ use crate::paper::table4::Table4Case;
 use crate::physics::case::CaseForm;
 use crate::physics::thermal::ISOTHERMAL_CORRECTION_MAX;
 use crate::pipeline::context::Context;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;
 use crate::pipeline::job::Job;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
@@ -42,7 +43,7 @@ impl Artefact for ShearHeating {
     }
 
     /// Figs. 4-6's solves: the correction is their post-process.
-    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, PipelineError> {
         let mut all = Vec::new();
         for (fig, _) in FIGURES {
             all.extend(fig.jobs(ctx)?);
@@ -50,7 +51,7 @@ impl Artefact for ShearHeating {
         Ok(all)
     }
 
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         build(ctx)
     }
 }
@@ -172,7 +173,7 @@ fn csv(rows: &[CorrectedCase]) -> String {
     }))
 }
 
-fn svg(rows: &[CorrectedCase]) -> Result<Option<String>, String> {
+fn svg(rows: &[CorrectedCase]) -> Result<Option<String>, PipelineError> {
     let mut series = Vec::new();
     for (k, (fig, lubricant)) in FIGURES.iter().enumerate() {
         let mine = || rows.iter().filter(|r| r.figure == fig.name);
@@ -226,7 +227,7 @@ fn svg(rows: &[CorrectedCase]) -> Result<Option<String>, String> {
     };
     render_svg(&fig)
         .map(Some)
-        .map_err(|e| format!("thermal.svg: {e}"))
+        .map_err(|e| PipelineError::plot("thermal.svg", e))
 }
 
 /// One lubricant's summary: where the isothermal assumption holds, the worst case and its
@@ -283,7 +284,7 @@ fn summary(
     text
 }
 
-fn build(ctx: &Context) -> Result<TargetReport, String> {
+fn build(ctx: &Context) -> Result<TargetReport, PipelineError> {
     let mut runs = Vec::new();
     let mut level = None;
     for (fig, _) in FIGURES {

@@ -16,10 +16,11 @@
 //!
 //! A case that is its own base solves cold, from the Hertzian pressure.
 
+use super::error::PipelineError;
 use crate::physics::case::{Case, CaseForm, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::rheology::Rheology;
-use crate::solver::output::{Progress, SolveError};
+use crate::solver::output::Progress;
 use crate::solver::point::{self, Params, PointSolution, Start};
 
 /// The base's slide-to-roll ratio for a physical case.
@@ -60,7 +61,8 @@ pub fn base_of(case: &Case) -> Option<Case> {
 /// Solves a point case as every command and pipeline does: the chain of its bases first,
 /// the deepest cold and each from the one below, at the same parameters, then `problem`
 /// (the case's) from its base; `observer` hears of the case's own solve, `on_base` of each
-/// base before it is solved. The same arithmetic as a sweep's ([`super::executor::run_jobs`]).
+/// base before it is solved; a base that does not resolve into a problem is
+/// [`PipelineError::Case`], the case's own failure [`PipelineError::Solve`]. The same arithmetic as a sweep's ([`super::executor::run_jobs`]).
 pub fn solve_case(
     case: &Case,
     problem: &Problem,
@@ -68,13 +70,13 @@ pub fn solve_case(
     lubricants: &LubricantTable,
     on_base: &mut dyn FnMut(&Case),
     observer: Option<&mut dyn FnMut(&Progress)>,
-) -> Result<PointSolution, SolveError> {
+) -> Result<PointSolution, PipelineError> {
     let chain: Vec<Case> = std::iter::successors(base_of(case), base_of).collect();
     let mut start: Option<Start> = None;
     for base in chain.iter().rev() {
         on_base(base);
         let bp = Problem::from_case(base, lubricants)
-            .map_err(|e| SolveError::InvalidParams(format!("the case's base: {e}")))?;
+            .map_err(|e| PipelineError::case("the case's base", e))?;
         // A base that fails leaves its members to start cold, as in a sweep.
         start = match &start {
             Some(s) => point::solve_from(&bp, params, s, None),
@@ -83,8 +85,8 @@ pub fn solve_case(
         .ok()
         .map(|s| Start::of(&s));
     }
-    match &start {
+    Ok(match &start {
         Some(s) => point::solve_from(problem, params, s, observer),
         None => point::solve(problem, params, observer),
-    }
+    }?)
 }

@@ -5,6 +5,7 @@
 //! the SHA-256 of payload and stamp, checked on read: a corrupt entry is reported and
 //! recomputed, never trusted.
 
+use crate::pipeline::error::PipelineError;
 use crate::solver::point::Start;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
 use sha2::{Digest, Sha256};
@@ -112,8 +113,8 @@ pub enum Lookup<T> {
     Hit(T, Option<Stamp>),
     /// No entry.
     Miss,
-    /// An entry that failed verification (the reason), to be recomputed.
-    Corrupt(String),
+    /// An entry that failed verification (the reason: the file and field), to be recomputed.
+    Corrupt(PipelineError),
 }
 
 /// A cache folder, and in memory the solutions its process solved, for the cases that start
@@ -173,32 +174,41 @@ impl Cache {
 
     /// Reads and verifies the entry of `key` as stored (`Ok(None)` when there is none; the
     /// error names the file and what is wrong).
-    pub fn get_raw(&self, key: &str) -> Result<Option<RawEntry>, String> {
+    pub fn get_raw(&self, key: &str) -> Result<Option<RawEntry>, PipelineError> {
         let path = self.path(key);
         let text = match std::fs::read_to_string(&path) {
             Ok(t) => t,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-            Err(e) => return Err(format!("{}: {e}", path.display())),
+            Err(e) => return Err(PipelineError::io(path.display().to_string(), &path, e)),
         };
-        let entry: EntryFile = serde_json::from_str(&text)
-            .map_err(|e| format!("{}: not a cache entry: {e}", path.display()))?;
+        let entry: EntryFile = serde_json::from_str(&text).map_err(|e| {
+            PipelineError::parse(
+                path.display().to_string(),
+                None,
+                format!("not a cache entry: {e}"),
+            )
+        })?;
         if entry.key != key {
-            return Err(format!(
-                "{}: field key: {} does not match the file name",
-                path.display(),
-                entry.key
+            return Err(PipelineError::parse(
+                path.display().to_string(),
+                Some("key"),
+                format!("{} does not match the file name", entry.key),
             ));
         }
         if EntryFile::checksum(&entry.payload, entry.stamp.as_deref()) != entry.sha256 {
-            return Err(format!("{}: field sha256: hash mismatch", path.display()));
+            return Err(PipelineError::parse(
+                path.display().to_string(),
+                Some("sha256"),
+                "hash mismatch",
+            ));
         }
-        let stamp = match &entry.stamp {
-            Some(s) => Some(
-                serde_json::from_str(s)
-                    .map_err(|e| format!("{}: field stamp: {e}", path.display()))?,
-            ),
-            None => None,
-        };
+        let stamp =
+            match &entry.stamp {
+                Some(s) => Some(serde_json::from_str(s).map_err(|e| {
+                    PipelineError::parse(path.display().to_string(), Some("stamp"), e)
+                })?),
+                None => None,
+            };
         Ok(Some(RawEntry {
             key: entry.key,
             payload: entry.payload,
@@ -214,9 +224,11 @@ impl Cache {
             Err(why) => Lookup::Corrupt(why),
             Ok(Some(raw)) => match serde_json::from_str(&raw.payload) {
                 Ok(v) => Lookup::Hit(v, raw.stamp),
-                Err(e) => {
-                    Lookup::Corrupt(format!("{}: field payload: {e}", self.path(key).display()))
-                }
+                Err(e) => Lookup::Corrupt(PipelineError::parse(
+                    self.path(key).display().to_string(),
+                    Some("payload"),
+                    e,
+                )),
             },
         }
     }
@@ -256,11 +268,17 @@ impl Cache {
     }
 
     /// Every key with an entry file, sorted (temporary files and anything else left out).
-    pub fn keys(&self) -> Result<Vec<String>, String> {
+    pub fn keys(&self) -> Result<Vec<String>, PipelineError> {
         let mut keys = Vec::new();
         let top = match std::fs::read_dir(&self.dir) {
             Ok(t) => t,
-            Err(e) => return Err(format!("{}: {e}", self.dir.display())),
+            Err(e) => {
+                return Err(PipelineError::io(
+                    self.dir.display().to_string(),
+                    &self.dir,
+                    e,
+                ))
+            }
         };
         for sub in top.flatten() {
             let Ok(files) = std::fs::read_dir(sub.path()) else {
@@ -319,7 +337,7 @@ mod tests {
             .replace("0.25", "0.5");
         std::fs::write(&path, text).unwrap();
         match cache.get::<Vec<f64>>(&key) {
-            Lookup::Corrupt(why) => assert!(why.contains("sha256"), "{why}"),
+            Lookup::Corrupt(why) => assert!(why.to_string().contains("sha256"), "{why}"),
             other => panic!("{other:?}"),
         }
         let _ = std::fs::remove_dir_all(cache.dir());

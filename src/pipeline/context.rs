@@ -3,6 +3,7 @@
 
 use crate::pipeline::cache::Cache;
 use crate::pipeline::csv::write_atomic;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{CachePolicy, RunProgress};
 use std::path::{Path, PathBuf};
 
@@ -50,20 +51,31 @@ impl Context<'_> {
     }
 
     /// Writes `text` to the file `name` of the output folder (atomically); returns `name`.
-    pub fn write(&self, name: &str, text: &str) -> Result<String, String> {
+    pub fn write(&self, name: &str, text: &str) -> Result<String, PipelineError> {
         let path = self.out.join(name);
-        write_atomic(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        write_atomic(&path, text)
+            .map_err(|e| PipelineError::io(format!("cannot write {}", path.display()), &path, e))?;
         Ok(name.to_string())
     }
 }
 
 /// The output folder must be writable before hours of solves are spent.
-pub fn check_writable(out: &Path) -> Result<(), String> {
-    std::fs::create_dir_all(out)
-        .map_err(|e| format!("cannot create output folder {}: {e}", out.display()))?;
+pub fn check_writable(out: &Path) -> Result<(), PipelineError> {
+    std::fs::create_dir_all(out).map_err(|e| {
+        PipelineError::io(
+            format!("cannot create output folder {}", out.display()),
+            out,
+            e,
+        )
+    })?;
     let probe = out.join(".repro-write-test");
-    std::fs::write(&probe, b"ok")
-        .map_err(|e| format!("output folder {} is not writable: {e}", out.display()))?;
+    std::fs::write(&probe, b"ok").map_err(|e| {
+        PipelineError::io(
+            format!("output folder {} is not writable", out.display()),
+            out,
+            e,
+        )
+    })?;
     let _ = std::fs::remove_file(probe);
     Ok(())
 }

@@ -7,6 +7,7 @@ use super::job::{point_jobs_in, Job, Setup};
 use super::offline::{missing, missing_message};
 use super::outcome::{CaseOutcome, SolvedCase};
 use crate::physics::case::{Case, Problem};
+use crate::pipeline::error::PipelineError;
 use crate::solver::point::{self, Start};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -75,7 +76,7 @@ pub fn run_jobs(
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Vec<FinishedJob>, String> {
+) -> Result<Vec<FinishedJob>, PipelineError> {
     if let CachePolicy::Offline(cache) = policy {
         let absent = missing(jobs, cache);
         if !absent.is_empty() {
@@ -83,7 +84,7 @@ pub fn run_jobs(
                 .into_iter()
                 .map(|(j, why)| (target.to_string(), j, why))
                 .collect();
-            return Err(missing_message(&named, cache));
+            return Err(PipelineError::Offline(missing_message(&named, cache)));
         }
     }
     let looked: Vec<Option<FinishedJob>> = jobs
@@ -109,10 +110,10 @@ pub fn run_jobs(
             .zip(looked)
             .map(|(job, d)| {
                 d.ok_or_else(|| {
-                    format!(
+                    PipelineError::Offline(format!(
                         "--offline: {target}: {} [key {}] vanished from the cache during the run",
                         job.label, job.key
-                    )
+                    ))
                 })
             })
             .collect();
@@ -293,7 +294,7 @@ pub fn run_cases(
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Vec<PointRun>, String> {
+) -> Result<Vec<PointRun>, PipelineError> {
     run_cases_in(target, (cases, level, Setup::Rule), policy, progress, warn)
 }
 
@@ -304,7 +305,7 @@ pub fn run_cases_in(
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Vec<PointRun>, String> {
+) -> Result<Vec<PointRun>, PipelineError> {
     let planned = point_jobs_in(cases, level, setup)?;
     let jobs: Vec<Job> = planned.iter().map(|p| p.job.clone()).collect();
     let finished = run_jobs(target, &jobs, policy, progress, warn)?;

@@ -6,11 +6,12 @@
 use super::base::base_of;
 use super::keys::case_key;
 use super::label::case_label;
-use super::outcome::CaseOutcome;
+use super::outcome::{CaseOutcome, ThermalFailure};
 use crate::physics::case::{Case, CaseError, CaseForm, Problem};
 use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{ThermalContact, TARGET_INPUTS};
+use crate::pipeline::error::PipelineError;
 use crate::solver::grid::Domain;
 use crate::solver::point::{Edge, FrictionRegion, Params, Start};
 use crate::solver::thermal::point_thermal;
@@ -59,12 +60,16 @@ impl Solve {
                 if let (Ok(s), Some(contact), CaseOutcome::Solved(solved)) =
                     (&r, thermal, &mut outcome)
                 {
-                    // A failed post-process leaves the isothermal numbers as they are.
-                    solved.thermal = TARGET_INPUTS
+                    // A failed post-process leaves the isothermal numbers as they are and
+                    // says why on the case's row.
+                    match TARGET_INPUTS
                         .iter()
                         .map(|inputs| point_thermal(s, problem, contact, inputs))
                         .collect::<Result<_, _>>()
-                        .unwrap_or_default();
+                    {
+                        Ok(thermal) => solved.thermal = thermal,
+                        Err(e) => solved.thermal_failure = Some(ThermalFailure::of(&e)),
+                    }
                 }
                 let kept = keep_start.then(|| r.as_ref().ok().map(Start::of)).flatten();
                 (outcome, kept)
@@ -213,23 +218,27 @@ pub struct PointJob {
 /// The jobs of `cases` at `level`, each with the parameters its problem calls for
 /// ([`Params::for_problem`]), labelled `case 1`, `case 2`, ... in order. Cases that do not
 /// resolve into a problem are an error (the sweep file is wrong).
-pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<PointJob>, String> {
+pub fn point_jobs(cases: &[Case], level: u32) -> Result<Vec<PointJob>, PipelineError> {
     point_jobs_in(cases, level, Setup::Rule)
 }
 
 /// The jobs of `cases` at `level` in `setup` (as [`point_jobs`] for [`Setup::Rule`]).
-pub fn point_jobs_in(cases: &[Case], level: u32, setup: Setup) -> Result<Vec<PointJob>, String> {
+pub fn point_jobs_in(
+    cases: &[Case],
+    level: u32,
+    setup: Setup,
+) -> Result<Vec<PointJob>, PipelineError> {
     let lubricants = LubricantTable::table1();
     cases
         .iter()
         .enumerate()
         .map(|(i, c)| {
-            let problem =
-                Problem::from_case(c, &lubricants).map_err(|e| format!("case {}: {e}", i + 1))?;
+            let problem = Problem::from_case(c, &lubricants)
+                .map_err(|e| PipelineError::case(format!("case {}", i + 1), e))?;
             let params = setup.params(&problem, level);
             let label = format!("case {} ({})", i + 1, case_label(c, params.level));
             let job = point_job(c, &problem, params.clone(), label, &lubricants)
-                .map_err(|e| format!("case {}: base: {e}", i + 1))?;
+                .map_err(|e| PipelineError::case(format!("case {}: base", i + 1), e))?;
             Ok(PointJob {
                 job,
                 problem,

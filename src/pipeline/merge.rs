@@ -5,6 +5,7 @@
 //! the destination's is kept.
 
 use super::cache::{Cache, RawEntry};
+use crate::pipeline::error::PipelineError;
 
 /// What a merge did.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -48,7 +49,7 @@ fn same_result(a: &RawEntry, b: &RawEntry) -> bool {
 
 /// Merges every verified entry of `src` into `dst`. A destination file that cannot be
 /// written ends the merge with an error naming it.
-pub fn merge(src: &Cache, dst: &Cache) -> Result<MergeReport, String> {
+pub fn merge(src: &Cache, dst: &Cache) -> Result<MergeReport, PipelineError> {
     let mut report = MergeReport::default();
     for key in src.keys()? {
         let entry = match src.get_raw(&key) {
@@ -75,8 +76,10 @@ pub fn merge(src: &Cache, dst: &Cache) -> Result<MergeReport, String> {
             )),
             // A destination entry that fails verification is replaced by a verified one.
             Ok(None) | Err(_) => {
-                dst.put_raw(&key, &entry.text)
-                    .map_err(|e| format!("cannot write {}: {e}", dst.path(&key).display()))?;
+                dst.put_raw(&key, &entry.text).map_err(|e| {
+                    let path = dst.path(&key);
+                    PipelineError::io(format!("cannot write {}", path.display()), path, e)
+                })?;
                 report.copied += 1;
             }
         }

@@ -7,13 +7,14 @@
 //!   cache alone; [`cache`], [`merge`]: the result cache and the merge of caches;
 //! - [`shard`], [`slurm`]: scale-out; [`provenance`]: what made an output;
 //! - [`sweep`]: sweep files (the cases of `cases/` and users' studies);
-//! - [`context`]: where and how targets are built; [`csv`]: deterministic CSV files;
+//! - [`context`]: where and how targets are built; [`error`]: why a target failed; [`csv`]: deterministic CSV files;
 //!   [`snapshot`]: the comparison with the committed baselines.
 
 pub mod base;
 pub mod cache;
 pub mod context;
 pub mod csv;
+pub mod error;
 pub mod executor;
 pub mod job;
 pub mod keys;

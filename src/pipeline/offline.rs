@@ -5,10 +5,11 @@
 use super::cache::{Cache, Lookup};
 use super::job::Job;
 use super::outcome::CaseOutcome;
+use crate::pipeline::error::PipelineError;
 
 /// The jobs of `jobs` that `cache` has no verified entry for (with the reason for a corrupt
 /// one).
-pub fn missing<'j>(jobs: &'j [Job], cache: &Cache) -> Vec<(&'j Job, Option<String>)> {
+pub fn missing<'j>(jobs: &'j [Job], cache: &Cache) -> Vec<(&'j Job, Option<PipelineError>)> {
     jobs.iter()
         .filter_map(|j| match cache.get::<CaseOutcome>(&j.key) {
             Lookup::Hit(..) => None,
@@ -20,7 +21,7 @@ pub fn missing<'j>(jobs: &'j [Job], cache: &Cache) -> Vec<(&'j Job, Option<Strin
 
 /// The message of an offline run that lacks entries: every missing case, by target, label and
 /// key.
-pub fn missing_message(missing: &[(String, &Job, Option<String>)], cache: &Cache) -> String {
+pub fn missing_message(missing: &[(String, &Job, Option<PipelineError>)], cache: &Cache) -> String {
     let mut msg = format!(
         "--offline: {} case(s) missing from the cache {} (an offline build never solves; run the missing shards or merge their caches first):",
         missing.len(),
@@ -37,9 +38,9 @@ pub fn missing_message(missing: &[(String, &Job, Option<String>)], cache: &Cache
 
 /// Checks that `cache` holds every job of `list` (each with the target that needs it); the
 /// error lists all that it lacks, across targets.
-pub fn check_complete(cache: &Cache, list: &[(String, Job)]) -> Result<(), String> {
+pub fn check_complete(cache: &Cache, list: &[(String, Job)]) -> Result<(), PipelineError> {
     let jobs: Vec<Job> = list.iter().map(|(_, j)| j.clone()).collect();
-    let absent: Vec<(String, &Job, Option<String>)> = missing(&jobs, cache)
+    let absent: Vec<(String, &Job, Option<PipelineError>)> = missing(&jobs, cache)
         .into_iter()
         .map(|(j, why)| {
             let target = list
@@ -53,6 +54,6 @@ pub fn check_complete(cache: &Cache, list: &[(String, Job)]) -> Result<(), Strin
     if absent.is_empty() {
         Ok(())
     } else {
-        Err(missing_message(&absent, cache))
+        Err(PipelineError::Offline(missing_message(&absent, cache)))
     }
 }

@@ -1,6 +1,7 @@
 //! What a solve yields, as cached: the numbers of a converged case ([`SolvedCase`]), or the
 //! typed reason it failed ([`Failure`]). Failures are results too: cached, counted and shown.
 
+use crate::physics::thermal::ThermalError;
 pub use crate::solver::output::Output;
 use crate::solver::output::{Film, Friction, Info, OutputErrors, SolveError, StartKind};
 use crate::solver::richardson::ErrorEstimate;
@@ -43,6 +44,10 @@ pub struct SolvedCase {
     /// post-process failed.
     #[serde(default)]
     pub thermal: Vec<Thermal>,
+    /// Why the thermal post-process failed, where it did (then `thermal` is empty). Absent
+    /// from the cached payload otherwise, so entries without it read as before.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub thermal_failure: Option<ThermalFailure>,
     /// The outputs' discretisation error, where the solve estimated it (films in `H`).
     #[serde(default)]
     pub errors: Option<Box<OutputErrors>>,
@@ -68,6 +73,7 @@ impl SolvedCase {
             load_error: info.load_error,
             start: info.start,
             thermal: Vec::new(),
+            thermal_failure: None,
             errors: errors.cloned().map(Box::new),
         }
     }
@@ -176,6 +182,33 @@ impl Failure {
     }
 }
 
+/// A thermal post-process that failed on a converged case, as cached: a short stable name
+/// of the reason (for tables and snapshots) and the post-process's message.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ThermalFailure {
+    /// What went wrong, from the error's variant: `input`, `stationary surface`, `no film`,
+    /// `stress`.
+    pub kind: String,
+    /// The post-process's message.
+    pub error: String,
+}
+
+impl ThermalFailure {
+    /// The failure of a thermal error.
+    pub fn of(error: &ThermalError) -> Self {
+        let kind = match error {
+            ThermalError::Input { .. } => "input",
+            ThermalError::StationarySurface { .. } => "stationary surface",
+            ThermalError::NoFilm { .. } => "no film",
+            ThermalError::Stress { .. } => "stress",
+        };
+        ThermalFailure {
+            kind: kind.to_string(),
+            error: error.to_string(),
+        }
+    }
+}
+
 /// A case's outcome: solved, or why not.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum CaseOutcome {
@@ -210,10 +243,16 @@ impl CaseOutcome {
         }
     }
 
-    /// The status a table shows: `solved`, or `failed: <kind>`.
+    /// The status a table shows: `solved` (`solved, thermal failed: <kind>` where the
+    /// thermal post-process failed), or `failed: <kind>`.
     pub fn status(&self) -> String {
-        self.failure()
-            .map_or_else(|| "solved".to_string(), Failure::status)
+        match self {
+            CaseOutcome::Solved(s) => match &s.thermal_failure {
+                Some(t) => format!("solved, thermal failed: {}", t.kind),
+                None => "solved".to_string(),
+            },
+            CaseOutcome::Failed(f) => f.status(),
+        }
     }
 }
 
@@ -276,5 +315,37 @@ mod tests {
             serde_json::to_string(&failed).unwrap(),
             r#"{"Failed":{"kind":"film collapse","error":"film thickness became non-positive","residual_history":[0.5]}}"#
         );
+    }
+
+    /// A failed thermal post-process is a status on the case's row, kept in the cache; an
+    /// entry without one keeps the payload it had.
+    #[test]
+    fn a_thermal_failure_is_a_status_and_absent_otherwise() {
+        let mut solved = SolvedCase {
+            h_central: 0.5,
+            h_min: 0.3,
+            hc_moes: 2.0,
+            hmin_moes: 1.2,
+            mu_bar_sliding: 6.0,
+            mu_bar_rolling: None,
+            level: 5,
+            cycles: 10,
+            newton_steps: 0,
+            residual: 1e-9,
+            load_error: 1e-6,
+            start: StartKind::Cold,
+            thermal: Vec::new(),
+            thermal_failure: None,
+            errors: None,
+        };
+        let plain = serde_json::to_string(&CaseOutcome::Solved(solved.clone())).unwrap();
+        assert!(!plain.contains("thermal_failure"), "{plain}");
+        assert_eq!(CaseOutcome::Solved(solved.clone()).status(), "solved");
+        solved.thermal_failure = Some(ThermalFailure::of(&ThermalError::NoFilm { h_m: -1e-9 }));
+        let outcome = CaseOutcome::Solved(solved);
+        assert_eq!(outcome.status(), "solved, thermal failed: no film");
+        let text = serde_json::to_string(&outcome).unwrap();
+        let back: CaseOutcome = serde_json::from_str(&text).unwrap();
+        assert_eq!(back, outcome, "{text}");
     }
 }

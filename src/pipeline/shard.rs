@@ -12,6 +12,7 @@
 //! a grid spread over the shards.
 
 use super::job::Job;
+use crate::pipeline::error::PipelineError;
 use std::collections::BTreeSet;
 use std::fmt;
 
@@ -32,30 +33,32 @@ impl fmt::Display for Shard {
 
 impl Shard {
     /// Parses `I/N` with `1 <= I <= N`.
-    pub fn parse(text: &str) -> Result<Self, String> {
+    pub fn parse(text: &str) -> Result<Self, PipelineError> {
         let (i, n) = text
             .split_once('/')
-            .ok_or_else(|| format!("'{text}': expected I/N, e.g. 2/8"))?;
+            .ok_or_else(|| PipelineError::Shard(format!("'{text}': expected I/N, e.g. 2/8")))?;
         let index: usize = i
             .trim()
             .parse()
-            .map_err(|e| format!("'{text}': shard index '{i}': {e}"))?;
+            .map_err(|e| PipelineError::Shard(format!("'{text}': shard index '{i}': {e}")))?;
         let count: usize = n
             .trim()
             .parse()
-            .map_err(|e| format!("'{text}': shard count '{n}': {e}"))?;
-        Self::new(index, count).map_err(|e| format!("'{text}': {e}"))
+            .map_err(|e| PipelineError::Shard(format!("'{text}': shard count '{n}': {e}")))?;
+        Self::new(index, count).map_err(|e| PipelineError::Shard(format!("'{text}': {e}")))
     }
 
     /// Shard `index` of `count`, checked.
-    pub fn new(index: usize, count: usize) -> Result<Self, String> {
+    pub fn new(index: usize, count: usize) -> Result<Self, PipelineError> {
         if count == 0 {
-            return Err("the number of shards must be at least 1".into());
+            return Err(PipelineError::Shard(
+                "the number of shards must be at least 1".into(),
+            ));
         }
         if !(1..=count).contains(&index) {
-            return Err(format!(
+            return Err(PipelineError::Shard(format!(
                 "shard index {index} outside 1..={count} (shards are numbered from 1)"
-            ));
+            )));
         }
         Ok(Shard { index, count })
     }
@@ -69,19 +72,19 @@ impl Shard {
         count: &str,
         min: Option<&str>,
         step: Option<&str>,
-    ) -> Result<Self, String> {
-        let num = |name: &str, v: &str| -> Result<usize, String> {
+    ) -> Result<Self, PipelineError> {
+        let num = |name: &str, v: &str| -> Result<usize, PipelineError> {
             v.trim()
                 .parse()
-                .map_err(|e| format!("{name}={v}: not a task number ({e})"))
+                .map_err(|e| PipelineError::Shard(format!("{name}={v}: not a task number ({e})")))
         };
         let id = num("SLURM_ARRAY_TASK_ID", id)?;
         let count = num("SLURM_ARRAY_TASK_COUNT", count)?;
         let Some(min) = min else {
-            return Err(
+            return Err(PipelineError::Shard(
                 "SLURM_ARRAY_TASK_MIN is not set, so whether the array starts at 0 or 1 is unknown; pass --shard I/N"
                     .into(),
-            );
+            ));
         };
         let min = num("SLURM_ARRAY_TASK_MIN", min)?;
         let step = match step {
@@ -89,12 +92,12 @@ impl Shard {
             None => 1,
         };
         if id < min || (id - min) % step != 0 {
-            return Err(format!(
+            return Err(PipelineError::Shard(format!(
                 "SLURM_ARRAY_TASK_ID={id} is not on the array's range (from {min} by {step}); an array given as a list needs --shard I/N"
-            ));
+            )));
         }
         Self::new((id - min) / step + 1, count).map_err(|e| {
-            format!("SLURM_ARRAY_TASK_ID={id} with MIN={min}, STEP={step}, COUNT={count}: {e}; an array given as a list needs --shard I/N")
+            PipelineError::Shard(format!("SLURM_ARRAY_TASK_ID={id} with MIN={min}, STEP={step}, COUNT={count}: {e}; an array given as a list needs --shard I/N"))
         })
     }
 
@@ -142,10 +145,14 @@ mod tests {
             Shard::from_slurm("20", "3", Some("10"), Some("10")).unwrap(),
             Shard { index: 2, count: 3 }
         );
-        let e = Shard::from_slurm("2", "3", None, None).unwrap_err();
+        let e = Shard::from_slurm("2", "3", None, None)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("SLURM_ARRAY_TASK_MIN"), "{e}");
         // --array=1,5,9 (a list): not a range, refused with the way out.
-        let e = Shard::from_slurm("9", "3", Some("1"), Some("1")).unwrap_err();
+        let e = Shard::from_slurm("9", "3", Some("1"), Some("1"))
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("--shard"), "{e}");
         assert!(Shard::from_slurm("x", "3", Some("0"), None).is_err());
     }

@@ -11,6 +11,7 @@
 //! times that bound, and a 1 % change in any result is five times it.
 
 use super::csv::{reader, table, write_atomic};
+use crate::pipeline::error::PipelineError;
 use std::fmt;
 use std::path::Path;
 
@@ -179,13 +180,14 @@ pub fn check_files(
     baselines: &Path,
     new_dir: &Path,
     files: &[String],
-) -> Result<Vec<Mismatch>, String> {
+) -> Result<Vec<Mismatch>, PipelineError> {
     let mut out = Vec::new();
     for f in files {
         let target = f.trim_end_matches(".csv");
         let new_path = new_dir.join(f);
-        let new = std::fs::read_to_string(&new_path)
-            .map_err(|e| format!("cannot read {}: {e}", new_path.display()))?;
+        let new = std::fs::read_to_string(&new_path).map_err(|e| {
+            PipelineError::io(format!("cannot read {}", new_path.display()), &new_path, e)
+        })?;
         let base_path = baselines.join(f);
         match std::fs::read_to_string(&base_path) {
             Ok(base) => out.extend(compare(target, &base, &new)),
@@ -202,15 +204,22 @@ pub fn check_files(
 }
 
 /// Copies `files` from `new_dir` into `baselines` (atomically each).
-pub fn accept(baselines: &Path, new_dir: &Path, files: &[String]) -> Result<(), String> {
-    std::fs::create_dir_all(baselines)
-        .map_err(|e| format!("cannot create {}: {e}", baselines.display()))?;
+pub fn accept(baselines: &Path, new_dir: &Path, files: &[String]) -> Result<(), PipelineError> {
+    std::fs::create_dir_all(baselines).map_err(|e| {
+        PipelineError::io(
+            format!("cannot create {}", baselines.display()),
+            baselines,
+            e,
+        )
+    })?;
     for f in files {
-        let text = std::fs::read_to_string(new_dir.join(f))
-            .map_err(|e| format!("cannot read {}: {e}", new_dir.join(f).display()))?;
+        let source = new_dir.join(f);
+        let text = std::fs::read_to_string(&source).map_err(|e| {
+            PipelineError::io(format!("cannot read {}", source.display()), &source, e)
+        })?;
         let dest = baselines.join(f);
         write_atomic(&dest, &normalize(&text))
-            .map_err(|e| format!("cannot write {}: {e}", dest.display()))?;
+            .map_err(|e| PipelineError::io(format!("cannot write {}", dest.display()), &dest, e))?;
     }
     Ok(())
 }

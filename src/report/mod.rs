@@ -9,13 +9,17 @@ use crate::paper::artefact::{Artefact, ErrorSummary, Measure, Spread, TargetRepo
 use crate::paper::{build, find};
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::{rows, Decimals};
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::provenance;
 use html::{csv_table, escape, human};
 use serde::Serialize;
 
 /// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
 /// cannot be built (a solve that fails is a result, not a stop).
-pub fn build_all(artefacts: &[&dyn Artefact], ctx: &Context) -> Result<Vec<TargetReport>, String> {
+pub fn build_all(
+    artefacts: &[&dyn Artefact],
+    ctx: &Context,
+) -> Result<Vec<TargetReport>, PipelineError> {
     let mut built = Vec::new();
     for a in artefacts {
         built.push(build(*a, ctx)?);

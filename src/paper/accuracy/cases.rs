@@ -10,6 +10,7 @@ use crate::physics::line_contact::LineProblem;
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::rheology::Rheology;
 use crate::physics::viscosity::ViscosityLaw;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::sweep::PointSpec;
 use crate::solver::line;
 use crate::solver::output::SolveError;
@@ -139,13 +140,12 @@ fn shipped_physical_case(
     sweep: &str,
     what: &str,
     matches: impl Fn(&PhysicalCase) -> bool,
-) -> Result<Case, String> {
-    shipped_sweep(sweep)
-        .map_err(|e| e.to_string())?
+) -> Result<Case, PipelineError> {
+    shipped_sweep(sweep)?
         .cases
         .into_iter()
         .find(|c| matches!(&c.spec, CaseForm::Physical(p) if matches(p)))
-        .ok_or_else(|| format!("cases/{sweep}.toml: no {what}"))
+        .ok_or_else(|| PipelineError::Input(format!("cases/{sweep}.toml: no {what}")))
 }
 
 /// The representative cases, cheapest first:
@@ -170,7 +170,7 @@ fn shipped_physical_case(
 /// - `line` (with `with_line`): the line contact of Table 3 at 3 GPa, 40 C, for fig7, two
 ///   levels finer than the point contacts (the dense Newton solve of the 1-D solver is
 ///   O(n^3): level 10 takes about 1.5 s, level 11 7 s).
-pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
+pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineError> {
     let lubs = LubricantTable::table1();
     // A dimensionless case of the Figs. 1-3 kind (S-bar 0.1, Barus, incompressible, Eyring).
     let barus = |m: f64, l: f64| {
@@ -189,7 +189,7 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
                 rheology: Rheology::Eyring,
             },
         )
-        .map_err(|e| e.to_string())
+        .map_err(PipelineError::from)
     };
     let light = barus(50.0, 10.0)?;
     let heavy = barus(1000.0, 15.0)?;
@@ -239,20 +239,24 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, String> {
                 targets,
                 level_offset: 0,
                 contact: AccuracyProblem::Point {
-                    problem: Box::new(Problem::from_case(case, &lubs).map_err(|e| e.to_string())?),
+                    problem: Box::new(
+                        Problem::from_case(case, &lubs)
+                            .map_err(|e| PipelineError::case(format!("accuracy case {name}"), e))?,
+                    ),
                     params: pipeline_params,
                 },
             })
         })
-        .collect::<Result<Vec<_>, String>>()?;
+        .collect::<Result<Vec<_>, PipelineError>>()?;
     if with_line {
         // The heaviest line contact of Table 3 (3 GPa), from cases/fig7.toml.
         let (lines, physics) = table3_line_cases()?;
         let heaviest = lines
             .into_iter()
             .max_by(|a, b| a.ph_pa.total_cmp(&b.ph_pa))
-            .ok_or("cases/fig7.toml: no Table 3 case")?;
-        let problem = LineProblem::from_physical(&heaviest, physics).map_err(|e| e.to_string())?;
+            .ok_or_else(|| PipelineError::Input("cases/fig7.toml: no Table 3 case".into()))?;
+        let problem = LineProblem::from_physical(&heaviest, physics)
+            .map_err(|e| PipelineError::case("accuracy case line", e))?;
         cases.push(AccuracyCase {
             name: "line",
             description:

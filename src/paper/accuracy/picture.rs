@@ -3,12 +3,13 @@
 
 use crate::paper::accuracy::AccuracyResult;
 use crate::paper::picture::MU_BAR;
+use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
 
 /// `figures/accuracy.svg`: the `mu-bar` error of each level against its wall time, log-log,
 /// one line per case through its levels, each marker labelled with its level. A level whose error is zero (the finest, when it is its own reference)
 /// cannot be drawn on a log axis and is counted in the figure's note by the plot module.
-pub fn svg(studies: &[AccuracyResult]) -> Result<String, String> {
+pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
     let series = studies
         .iter()
         .enumerate()
@@ -40,7 +41,7 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, String> {
         curves: Vec::new(),
         note: None,
     };
-    render_svg(&fig).map_err(|e| format!("accuracy.svg: {e}"))
+    render_svg(&fig).map_err(|e| PipelineError::plot("accuracy.svg", e))
 }
 
 #[cfg(test)]

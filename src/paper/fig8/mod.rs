@@ -12,6 +12,7 @@ use crate::paper::mastercurve::fit::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;
 use crate::pipeline::context::Context;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
 use serde::Serialize;
 use std::path::Path;
@@ -105,22 +106,22 @@ impl Artefact for Fig8 {
         "Measured friction transformed to (tau_c, mu-bar) by Sec. IV, on Eq. (13) (datasets of cases/fig8/)"
     }
 
-    fn jobs(&self, _: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, _: &Context) -> Result<Vec<Job>, PipelineError> {
         Ok(Vec::new())
     }
 
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         build_from(Path::new(DATA_DIR), ctx)
     }
 }
 
 /// Builds Fig. 8 from the datasets of `dir`.
-pub fn build_from(dir: &Path, ctx: &Context) -> Result<TargetReport, String> {
+pub fn build_from(dir: &Path, ctx: &Context) -> Result<TargetReport, PipelineError> {
     let lubs = LubricantTable::table1();
-    let datasets = read_folder(dir).map_err(|e| e.to_string())?;
+    let datasets = read_folder(dir).map_err(|e| PipelineError::Data(Box::new(e)))?;
     let mut rows = Vec::new();
     for d in &datasets {
-        rows.extend(transform(d, &lubs).map_err(|e| e.to_string())?);
+        rows.extend(transform(d, &lubs).map_err(|e| PipelineError::Data(Box::new(e)))?);
     }
     let points: Vec<(f64, f64)> = rows
         .iter()

@@ -5,10 +5,11 @@
 use crate::paper::fig8::reader::ReducedRow;
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
+use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series};
 
 /// `fig8.svg`: the measured points and Eq. (13) dashed, with the fitted `c` solid when given.
-pub fn svg(rows: &[ReducedRow], fitted: Option<f64>) -> Result<String, String> {
+pub fn svg(rows: &[ReducedRow], fitted: Option<f64>) -> Result<String, PipelineError> {
     let mut series: Vec<Series> = Vec::new();
     for r in rows {
         let p = (r.reduced.characteristic.tau_c, r.reduced.mu_bar);
@@ -61,5 +62,5 @@ pub fn svg(rows: &[ReducedRow], fitted: Option<f64>) -> Result<String, String> {
                 .to_string()
         }),
     };
-    render_svg(&fig).map_err(|e| format!("fig8.svg: {e}"))
+    render_svg(&fig).map_err(|e| PipelineError::plot("fig8.svg", e))
 }

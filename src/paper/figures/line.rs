@@ -9,6 +9,7 @@ use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::cache::Stamp;
 use crate::pipeline::csv::rows;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
 use crate::pipeline::job::{Job, Solve};
 use crate::pipeline::keys::line_key;
@@ -19,24 +20,24 @@ use serde::Serialize;
 /// The five Table 3 cases as line contacts, in the order of the table, with the physics of
 /// Figs. 4-7. The rows are read from the shipped `cases/fig7.toml` (its `D = 1/2` block), the
 /// one source of truth for Table 3.
-pub fn table3_line_cases() -> Result<(Vec<LinePhysicalCase>, Physics), String> {
-    let sweep = shipped_sweep("fig7").map_err(|e| e.to_string())?;
+pub fn table3_line_cases() -> Result<(Vec<LinePhysicalCase>, Physics), PipelineError> {
+    let sweep = shipped_sweep("fig7")?;
     let lubs = LubricantTable::table1();
     let mut out: Vec<LinePhysicalCase> = Vec::new();
     for c in &sweep.cases {
         if let CaseForm::Physical(ph) = &c.spec {
             let line = LinePhysicalCase::from_point_case(ph, &lubs)
-                .map_err(|e| format!("cases/fig7.toml: {e}"))?;
+                .map_err(|e| PipelineError::case("cases/fig7.toml", e))?;
             if !out.contains(&line) {
                 out.push(line);
             }
         }
     }
     if out.len() != 5 {
-        return Err(format!(
+        return Err(PipelineError::Input(format!(
             "cases/fig7.toml: expected the 5 load cases of Table 3, found {}",
             out.len()
-        ));
+        )));
     }
     Ok((out, Physics::figs_4_to_7()))
 }
@@ -61,14 +62,14 @@ pub struct LineRun {
 /// The five Table 3 line contacts at `level` as jobs (labelled `line contact 1..5`), each
 /// with the parameters its problem calls for ([`Params::for_problem`]), with their cases and
 /// problems.
-pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem)>, String> {
+pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem)>, PipelineError> {
     let (cases, physics) = table3_line_cases()?;
     cases
         .into_iter()
         .enumerate()
         .map(|(i, case)| {
             let problem = LineProblem::from_physical(&case, physics)
-                .map_err(|e| format!("cases/fig7.toml: line contact: {e}"))?;
+                .map_err(|e| PipelineError::case("cases/fig7.toml: line contact", e))?;
             let params = Params::for_problem(&problem, level);
             let job = Job {
                 key: line_key(&case, &physics, &params),
@@ -99,7 +100,7 @@ pub fn solve_table3(
     store: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
-) -> Result<Vec<LineRun>, String> {
+) -> Result<Vec<LineRun>, PipelineError> {
     let jobs = table3_jobs(level)?;
     let list: Vec<Job> = jobs.iter().map(|(j, _, _)| j.clone()).collect();
     let done = run_jobs(target, &list, store, progress, warn)?;

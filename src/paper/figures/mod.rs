@@ -12,13 +12,13 @@ use crate::paper::artefact::{
 use crate::paper::cases::shipped_sweep;
 use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
 use crate::physics::case::Case;
-use crate::pipeline::context::Context;
 use crate::pipeline::executor::{run_cases, run_cases_in, PointRun, RunProgress};
 use crate::pipeline::job::{point_jobs, point_jobs_in, Job, Setup};
 use crate::pipeline::keys::LINE_SOLVER_REVISION;
 use crate::pipeline::outcome::{CaseOutcome, Output, SolvedCase};
 use crate::pipeline::provenance::{Provenance, SUFFIX};
 use crate::pipeline::sweep::Sweep;
+use crate::pipeline::{context::Context, error::PipelineError};
 use crate::plot::{Marker, Series};
 use crate::solver::point::SOLVER_REVISION;
 use line::LineRun;
@@ -197,13 +197,13 @@ pub const FIG7: SweepFigure = SweepFigure {
 
 impl SweepFigure {
     /// Its shipped sweep.
-    pub fn sweep(&self) -> Result<Sweep, String> {
-        shipped_sweep(self.sweep).map_err(|e| e.to_string())
+    pub fn sweep(&self) -> Result<Sweep, PipelineError> {
+        Ok(shipped_sweep(self.sweep)?)
     }
 
     /// Runs its sweep's cases of the context (see [`run_sweep`]); `label` names the run in
     /// progress and errors.
-    pub fn run(&self, label: &str, ctx: &Context) -> Result<(Vec<PointRun>, u32), String> {
+    pub fn run(&self, label: &str, ctx: &Context) -> Result<(Vec<PointRun>, u32), PipelineError> {
         run_sweep(label, &self.sweep()?, Some(self.level), ctx)
     }
 }
@@ -222,7 +222,7 @@ impl Artefact for SweepFigure {
     }
 
     /// Its sweep's cases, and for Fig. 7 the line contacts.
-    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, PipelineError> {
         let sweep = self.sweep()?;
         let mut jobs = study_jobs(&sweep, Some(self.level), ctx)?;
         if self.paper_setup {
@@ -243,7 +243,7 @@ impl Artefact for SweepFigure {
         Ok(jobs)
     }
 
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         let name = self.name;
         let sweep = self.sweep()?;
         // Fig. 7 adds the Table 3 line contacts, solved by the 1-D solver at its level.
@@ -316,7 +316,7 @@ pub fn run_sweep(
     sweep: &Sweep,
     default_level: Option<u32>,
     ctx: &Context,
-) -> Result<(Vec<PointRun>, u32), String> {
+) -> Result<(Vec<PointRun>, u32), PipelineError> {
     let (cases, level) = selection(sweep, default_level, ctx);
     let progress = |p: RunProgress| (ctx.progress)(label, p);
     let runs = run_cases(
@@ -335,7 +335,7 @@ pub fn study_jobs(
     sweep: &Sweep,
     default_level: Option<u32>,
     ctx: &Context,
-) -> Result<Vec<Job>, String> {
+) -> Result<Vec<Job>, PipelineError> {
     let (cases, level) = selection(sweep, default_level, ctx);
     Ok(point_jobs(&cases, level)?
         .into_iter()
@@ -394,7 +394,7 @@ pub(crate) fn write_provenance(
     runs: &[PointRun],
     line: Option<&[LineRun]>,
     ctx: &Context,
-) -> Result<(), String> {
+) -> Result<(), PipelineError> {
     let text = provenance(stem, report, runs, line).to_json();
     report
         .files
@@ -428,7 +428,7 @@ fn severity_summary(runs: &[PointRun]) -> String {
 
 /// A user's own sweep (`repro run`), drawn and fitted as Figs. 3-7: sliding `mu-bar` against
 /// `tau_c`, files named after `stem`.
-pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<TargetReport, String> {
+pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<TargetReport, PipelineError> {
     let beside = Beside {
         fitted: Vec::new(),
         paper_setup: false,
@@ -486,7 +486,7 @@ fn sweep_figure(
     default_level: Option<u32>,
     ctx: &Context,
     beside: &Beside,
-) -> Result<(TargetReport, Vec<PointRun>), String> {
+) -> Result<(TargetReport, Vec<PointRun>), PipelineError> {
     let (runs, level) = run_sweep(stem, sweep, default_level, ctx)?;
     let extra = &beside.fitted;
     for (i, r) in runs.iter().enumerate() {

@@ -6,6 +6,7 @@ use super::Plot;
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::eq13_curve;
 use crate::physics::case::CaseForm;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
 
@@ -52,7 +53,7 @@ pub fn svg(
     runs: &[PointRun],
     plot: Plot,
     (extra, beside_note): (&[Series], Option<String>),
-) -> Result<Option<String>, String> {
+) -> Result<Option<String>, PipelineError> {
     let mut keys: Vec<String> = Vec::new();
     let mut series: Vec<Series> = Vec::new();
     for r in runs {
@@ -129,5 +130,5 @@ pub fn svg(
     };
     render_svg(&fig)
         .map(Some)
-        .map_err(|e| format!("{name}.svg: {e}"))
+        .map_err(|e| PipelineError::plot(format!("{name}.svg"), e))
 }

@@ -21,6 +21,7 @@ use crate::physics::case::{Case, CaseForm};
 use crate::physics::rheology::{LimitingShearStress, Rheology};
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::rows;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;
 use crate::pipeline::job::Job;
 use crate::pipeline::sweep::Sweep;
@@ -45,11 +46,11 @@ const HERTZ_AREA_OVER_LOAD: f64 = 1.5;
 
 /// A case of the Eyring sweep with the limit of `lambda_bar` (`Lambda = Lambda-bar tau0 /
 /// p_H`, `tau_L0 = TAU_L0_OVER_TAU0 tau0`). The sweep's cases are physical.
-fn limited(case: &Case, lambda_bar: f64) -> Result<Case, String> {
+fn limited(case: &Case, lambda_bar: f64) -> Result<Case, PipelineError> {
     let CaseForm::Physical(p) = &case.spec else {
-        return Err(format!(
+        return Err(PipelineError::Input(format!(
             "cases/{SWEEP}.toml: the lss target needs physical cases"
-        ));
+        )));
     };
     let mut out = case.clone();
     out.physics.rheology = Rheology::EyringLss(LimitingShearStress {
@@ -62,8 +63,8 @@ fn limited(case: &Case, lambda_bar: f64) -> Result<Case, String> {
 /// The Eyring cases the context runs (a sample of every `stride`-th at the snapshot profile,
 /// as Fig. 4 takes them, so that they are Fig. 4's cache entries), as a sweep, with their
 /// 1-based case numbers in `cases/fig4.toml`.
-fn eyring_selection(ctx: &Context) -> Result<(Sweep, Vec<usize>), String> {
-    let mut sweep = shipped_sweep(SWEEP).map_err(|e| e.to_string())?;
+fn eyring_selection(ctx: &Context) -> Result<(Sweep, Vec<usize>), PipelineError> {
+    let mut sweep = shipped_sweep(SWEEP)?;
     let stride = ctx.stride_for(sweep.cases.len());
     let numbers: Vec<usize> = (0..sweep.cases.len())
         .step_by(stride)
@@ -91,7 +92,10 @@ fn picked(i: usize, j: usize, ctx: &Context) -> bool {
 
 /// Per `Lambda-bar`, its cases of the Eyring selection with the limit ([`picked`]), and
 /// which of the selection they are.
-fn limited_sweeps(eyring: &Sweep, ctx: &Context) -> Result<Vec<(f64, Sweep, Vec<usize>)>, String> {
+fn limited_sweeps(
+    eyring: &Sweep,
+    ctx: &Context,
+) -> Result<Vec<(f64, Sweep, Vec<usize>)>, PipelineError> {
     LAMBDA_BARS
         .iter()
         .enumerate()
@@ -127,7 +131,7 @@ fn unsampled<'a>(ctx: &Context<'a>) -> Context<'a> {
 }
 
 /// Every solve of the target in the context: the Eyring cases (Fig. 4's) and the limited ones.
-fn jobs(ctx: &Context) -> Result<Vec<Job>, String> {
+fn jobs(ctx: &Context) -> Result<Vec<Job>, PipelineError> {
     let (eyring, _) = eyring_selection(ctx)?;
     let plain = unsampled(ctx);
     let mut all = study_jobs(&eyring, default_level(), &plain)?;
@@ -265,7 +269,7 @@ fn fit_csv(forms: &[(&str, Option<FormFit>)]) -> String {
 
 /// `lss.svg`: every limited case against `tau_c`, one series per `Lambda-bar`, with the
 /// Eq. (13)-based form of each (solid) and Eq. (13) itself (dashed).
-fn svg(rows: &[LimitedCase], form: Option<FormFit>) -> Result<Option<String>, String> {
+fn svg(rows: &[LimitedCase], form: Option<FormFit>) -> Result<Option<String>, PipelineError> {
     let (lo, hi) = rows
         .iter()
         .filter(|r| r.limited.is_some())
@@ -313,7 +317,9 @@ fn svg(rows: &[LimitedCase], form: Option<FormFit>) -> Result<Option<String>, St
         curves,
         ..Figure::default()
     };
-    render_svg(&figure).map(Some).map_err(|e| e.to_string())
+    render_svg(&figure)
+        .map(Some)
+        .map_err(|e| PipelineError::plot("lss.svg", e))
 }
 
 /// The `lss` target.
@@ -328,16 +334,16 @@ impl Artefact for Lss {
         "Beyond the paper: Fig. 4's cases with a limiting shear stress at Lambda-bar 5-40, and the form of their curve"
     }
 
-    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, PipelineError> {
         jobs(ctx)
     }
 
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         build(ctx)
     }
 }
 
-fn build(ctx: &Context) -> Result<TargetReport, String> {
+fn build(ctx: &Context) -> Result<TargetReport, PipelineError> {
     let (eyring_sweep, numbers) = eyring_selection(ctx)?;
     let plain = unsampled(ctx);
     let (eyring, level) = run_sweep("lss", &eyring_sweep, default_level(), &plain)?;

@@ -23,6 +23,7 @@ use crate::paper::mastercurve::refined::{
 use crate::physics::flat_film::alpha_e;
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::rows;
+use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::RunProgress;
 use crate::pipeline::job::Job;
 use picture::CasePoint;
@@ -43,7 +44,7 @@ struct FitCase {
     flat: f64,
 }
 
-fn collect(ctx: &Context) -> Result<Vec<FitCase>, String> {
+fn collect(ctx: &Context) -> Result<Vec<FitCase>, PipelineError> {
     let mut rows = Vec::new();
     for fig in FIGURES {
         let figure = fig.name;
@@ -217,7 +218,7 @@ impl Artefact for Mastercurve {
     }
 
     /// The figures' own cases, each solve once.
-    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, String> {
+    fn jobs(&self, ctx: &Context) -> Result<Vec<Job>, PipelineError> {
         let mut seen = std::collections::HashSet::new();
         let mut all: Vec<Job> = Vec::new();
         for fig in FIGURES {
@@ -230,12 +231,12 @@ impl Artefact for Mastercurve {
         Ok(all)
     }
 
-    fn build(&self, ctx: &Context) -> Result<TargetReport, String> {
+    fn build(&self, ctx: &Context) -> Result<TargetReport, PipelineError> {
         build(ctx)
     }
 }
 
-fn build(ctx: &Context) -> Result<TargetReport, String> {
+fn build(ctx: &Context) -> Result<TargetReport, PipelineError> {
     let rows = collect(ctx)?;
     let samples: Vec<Sample> = rows.iter().map(|r| r.sample).collect();
     let all = fit_refined(&samples);

@@ -4,6 +4,7 @@
 
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
+use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series, HEIGHT, WIDTH};
 
 /// One case on the picture.
@@ -64,7 +65,7 @@ fn range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 }
 
 /// `mastercurve.svg`.
-pub fn svg(points: &[CasePoint]) -> Result<String, String> {
+pub fn svg(points: &[CasePoint]) -> Result<String, PipelineError> {
     let (x_min, x_max) = range(points.iter().map(|p| p.tau_c));
     let on_eq13 = Figure {
         title: "Every computed case of Figs. 3-7 (tau_c >= 100) on Eq. (13)".into(),
@@ -132,7 +133,7 @@ pub fn svg(points: &[CasePoint]) -> Result<String, String> {
         .iter()
         .map(render_svg)
         .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| format!("mastercurve.svg: {e}"))?;
+        .map_err(|e| PipelineError::plot("mastercurve.svg", e))?;
     Ok(stack(&svgs))
 }
 
