@@ -6,6 +6,7 @@ use super::args::{
     ViscosityArg,
 };
 use anyhow::{anyhow, bail, Context as _, Result};
+use repro::paper::artefact::WORKING_LEVEL;
 use repro::physics::case::{
     Case, CaseError, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };
@@ -230,8 +231,10 @@ impl SolveArgs {
     /// (`--domain auto` and `--edge auto` keep the rule's domain and edge; the others are
     /// expert overrides).
     pub fn params(&self, problem: &Problem) -> Result<point::Params> {
-        let rule =
-            point::Params::for_problem(problem, check_level("--level", self.level.unwrap_or(7))?);
+        let rule = point::Params::for_problem(
+            problem,
+            check_level("--level", self.level.unwrap_or(WORKING_LEVEL))?,
+        );
         Ok(point::Params {
             domain: match self.domain {
                 DomainArg::Auto => rule.domain,

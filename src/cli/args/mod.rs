@@ -55,9 +55,10 @@ pub enum Command {
     ///
     /// Every target (or those named) is built at level 5 with every 4th case of the large
     /// sweeps, into a temporary folder, and each CSV cell is compared with snapshots/: numbers
-    /// within a relative 1e-4, text exactly. Exits 1 naming the target, case, column, baseline
-    /// and new value of every difference. With --accept the differences are shown and the new
-    /// results become the baselines (what `make snapshots` runs).
+    /// within a relative 2e-3 (four times the solver's stopping bound), text exactly. Exits 1
+    /// naming the target, case, column, baseline and new value of every difference. With
+    /// --accept the differences are shown and the new results become the baselines (what
+    /// `make snapshots` runs).
     Check(CheckArgs),
     /// What accuracy costs: representative cases at levels 4-8, error against a Richardson
     /// extrapolation and wall time (figures/accuracy.csv, accuracy.svg, accuracy_levels.csv).
