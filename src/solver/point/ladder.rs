@@ -20,8 +20,8 @@ use super::edge::settle_edge;
 use super::finish::{finish, polish_and_finish, Work};
 use super::multigrid::Hierarchy;
 use super::stopping::{Known, WarmStop};
-use super::{friction, Params, MIN_LEVEL};
-use crate::solver::output::{LadderStop, LevelValues, Method, OutputErrors, Progress};
+use super::{Params, MIN_LEVEL};
+use crate::solver::output::{LadderStop, LevelValues, Method, Output, OutputErrors, Progress};
 use std::time::Instant;
 
 /// A coarser level's converged solution: the start of the same level of a member's ladder.
@@ -38,17 +38,16 @@ pub struct CoarseSolution {
     pub residual: Option<f64>,
 }
 
-/// The outputs of level `k` as it stands.
+/// The outputs of level `k` as it stands (those the stopping rule reads, the total friction
+/// in place of its rolling part).
 fn values(mg: &Hierarchy, k: usize, params: &Params) -> LevelValues {
-    let level = &mg.levels[k];
-    let film = friction::film(level, 1.0);
-    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
+    let [h_central, h_min, sliding, rolling] = stop_outputs(mg, k, params);
     LevelValues {
-        level: level_number(level),
-        h_central: film.h_central,
-        h_min: film.h_min,
-        mu_bar_sliding: mu.sliding,
-        mu_bar_total: mu.total(),
+        level: level_number(&mg.levels[k]),
+        h_central,
+        h_min,
+        mu_bar_sliding: sliding,
+        mu_bar_total: sliding + rolling,
     }
 }
 
@@ -178,13 +177,13 @@ pub(super) fn output_errors(
         if level < MIN_LEVEL {
             break;
         }
-        let finer = &levels[0];
         let finer = [
-            finer.h_central,
-            finer.h_min,
-            finer.mu_bar_sliding,
-            finer.mu_bar_total,
-        ];
+            Output::HCentral,
+            Output::HMin,
+            Output::MuBarSliding,
+            Output::MuBarTotal,
+        ]
+        .map(|o| levels[0].get(o));
         let Some(residual) = converge_level(mg, k, params, (method, finer), start, observe) else {
             stopped = Some(LadderStop::NotConverged { level });
             break;
