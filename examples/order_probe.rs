@@ -24,6 +24,8 @@
 //! `dlneta`, the largest change of `ln(eta)` between neighbouring nodes. `PROBE_OUTTOL` sets the output
 //! tolerance, `PROBE_TOL` the residual tolerance (`Params::tolerance`); `PROBE_NEWTONIAN`
 //! takes a Newtonian fluid instead of Eyring.
+mod common;
+
 use repro::physics::case::*;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::deformation::Kernel;
@@ -32,42 +34,7 @@ use repro::solver::point::{self, Edge, FrictionRegion};
 
 fn main() {
     let a: Vec<String> = std::env::args().collect();
-    let case = if a[1] == "case23" {
-        Case {
-            spec: CaseForm::Physical(PhysicalCase {
-                lubricant: LubricantSpec::Named {
-                    lubricant: "5p4e".into(),
-                    temperature_c: 40.0,
-                },
-                ph_pa: 1e9,
-                um_m_s: 12.0,
-                slip: 0.005,
-                tau0_pa: 6e6,
-                rx_m: 1.03875e-2,
-                ry_m: 1.03875e-2,
-                e_prime_pa: 226e9,
-            }),
-            physics: Physics::figs_4_to_7(),
-        }
-    } else {
-        let v: Vec<f64> = a[1]
-            .split(':')
-            .skip(1)
-            .map(|s| s.parse().unwrap())
-            .collect();
-        Case {
-            spec: CaseForm::Dimensionless(DimensionlessCase {
-                m: v[0],
-                l: v[1],
-                s_bar: v[2],
-                d: 1.0,
-                slip: 0.01,
-                eta0_pa_s: None,
-                ph_pa: None,
-            }),
-            physics: Physics::default(),
-        }
-    };
+    let case = common::case_of(&a[1]);
     // PROBE_NEWTONIAN=1 takes a Newtonian fluid instead of Eyring (the film's study only).
     let mut case = case;
     if std::env::var_os("PROBE_NEWTONIAN").is_some() {

@@ -25,8 +25,10 @@
 //! depend on the domain by tens of per cent. The leading correction to the asymptote is the
 //! film constant, relative order `H0 / (m r^2)`.
 
+use super::nested::Surround;
 use crate::physics::viscosity::Viscosity;
 use crate::solver::grid::{Domain, Grid};
+use std::sync::Arc;
 
 /// Points of the tabulated angular profile `g` on `[0, phi]`.
 const TABLE: usize = 512;
@@ -55,6 +57,8 @@ pub(crate) struct FarField {
     last_fit: Option<(usize, f64, f64)>,
     kappa: f64,
     viscosity: Viscosity,
+    /// A wide solution that replaces the asymptote around a nested domain ([`Surround`]).
+    surround: Option<Arc<Surround>>,
 }
 
 /// The gap's angular factor `m(psi) = S cos^2 + (1 - S) kappa^2 sin^2` and its derivative.
@@ -212,7 +216,21 @@ impl FarField {
             last_fit: None,
             kappa,
             viscosity,
+            surround: None,
         }
+    }
+
+    /// This far field with the surroundings `surround` in place of the asymptote: the
+    /// edge's pressure, the outside load and the film offset come from a wide solution.
+    pub fn with_surround(mut self, surround: Option<Arc<Surround>>) -> Self {
+        self.surround = surround;
+        self
+    }
+
+    /// What the film equation adds to the gap at `(X, Y)`: the deformation by the
+    /// surroundings' pressure (zero for the asymptote, whose deformation is left out).
+    pub fn film_offset(&self, x: f64, y: f64) -> f64 {
+        self.surround.as_ref().map_or(0.0, |s| s.film_offset(x, y))
     }
 
     /// The cavitation angle `phi` from the upstream axis, in the `(X, Y / kappa)` plane.
@@ -254,6 +272,9 @@ impl FarField {
     /// The pressure `P` of the asymptote at `(X, Y)` for the film constant `h0`: the
     /// reduced pressure mapped back through the viscosity law.
     pub fn pressure(&self, x: f64, y: f64, h0: f64) -> f64 {
+        if let Some(s) = &self.surround {
+            return s.pressure(x, y);
+        }
         self.pressure_of_reduced(self.reduced_pressure(x, y, h0))
     }
 
@@ -366,6 +387,9 @@ impl FarField {
     /// the integrand tends to `g / b`), Gauss-Legendre in `t` and the midpoint rule in the
     /// angle, times `kappa` for `dY = kappa dY'`.
     pub fn outside_load(&self, domain: &Domain, h0: f64) -> f64 {
+        if let Some(s) = &self.surround {
+            return s.outside_load();
+        }
         const ANGLES: usize = 720;
         let (x0, x1, y1) = (domain.x_start, domain.x_end, domain.y_half / self.kappa);
         let dpsi = 2.0 * self.phi / ANGLES as f64;

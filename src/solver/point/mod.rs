@@ -21,6 +21,7 @@ mod jacobian;
 mod ladder;
 mod level;
 mod multigrid;
+pub mod nested;
 mod newton;
 mod params;
 mod relax;
@@ -121,7 +122,11 @@ fn converge_cold(
 ) -> Result<(Hierarchy, Converged), SolveError> {
     let g = &problem.groups;
     // Initial Delta: the Eq. (10) central film minus the Hertzian approach (W(0) = 1).
-    let h0 = hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0;
+    // A nested domain starts from its surroundings: their pressure and film constant.
+    let surround = params.surround.as_ref().map(|s| s.0.clone());
+    let h0 = surround
+        .as_ref()
+        .map_or(hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0, |s| s.delta());
     let mut mg = hierarchy(problem, params, h0);
     let top = mg.levels.len() - 1;
     // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
@@ -130,7 +135,10 @@ fn converge_cold(
     {
         let l0 = &mut mg.levels[0];
         let grid = l0.grid;
-        l0.p = grid.sample(crate::physics::hertz::Hertz::pressure);
+        l0.p = match &surround {
+            Some(s) => grid.sample(|x, y| s.pressure(x, y)),
+            None => grid.sample(crate::physics::hertz::Hertz::pressure),
+        };
     }
     let mut starts = Vec::with_capacity(top);
     // The same states, as the starts of the coarser levels' solves for the error estimate
@@ -258,7 +266,8 @@ fn hierarchy(problem: &Problem, params: &Params, h0: f64) -> Hierarchy {
     } else {
         g.lambda
     };
-    let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity);
+    let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity)
+        .with_surround(params.surround.as_ref().map(|s| s.0.clone()));
     let mut mg = Hierarchy::new(model, far, &params.domain, params, h0);
     mg.rolling_scale = params.rolling_friction.then(|| g.rolling_stress_scale());
     mg

@@ -141,7 +141,8 @@ impl Hierarchy {
         let model = self.model;
         let level = &mut self.levels[k];
         let g = level.grid;
-        level.hrhs = g.sample(|x, y| model.geometry(x, y));
+        let far = &self.far;
+        level.hrhs = g.sample(|x, y| model.geometry(x, y) + far.film_offset(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
         level.set_far_field(&self.far, self.h0);
     }
