@@ -2,7 +2,7 @@
 //! its points measured against Eq. (13) ([`sweep_figure`]), as the paper's figures and a
 //! user's study alike describe it ([`Drawing`]).
 
-use super::plot::{Plot, SeriesBy};
+use super::plot::{Friction, Plot, SeriesBy};
 use super::run::{run_sweep, selection};
 use super::{picture, rows};
 use crate::paper::artefact::{Measure, TargetReport};
@@ -165,15 +165,15 @@ pub fn sweep_figure(
     Ok((report, runs))
 }
 
-/// Fig. 1's collapse: the scatter of total `mu-bar` ordered by the paper's `S-bar^(1/4) M L^3`
-/// against the exponents of `S-bar^a M L^c` that collapse our points best.
-pub fn severity_summary(runs: &[PointRun]) -> String {
+/// Fig. 1's collapse: the scatter of the plotted `mu-bar` (`y`; total for Fig. 1) ordered by
+/// the paper's `S-bar^(1/4) M L^3` against the exponents of `S-bar^a M L^c` that collapse our
+/// points best.
+pub fn severity_summary(runs: &[PointRun], y: Friction) -> String {
     let cases: Vec<(f64, f64, f64, f64)> = runs
         .iter()
         .filter_map(|r| {
             let g = &r.problem.groups;
-            r.solved()
-                .map(|rec| (g.s_bar, g.m, g.l, rec.mu_bar_total()))
+            r.solved().map(|rec| (g.s_bar, g.m, g.l, y.of(rec)))
         })
         .collect();
     let mut paper: Vec<(f64, f64)> = cases

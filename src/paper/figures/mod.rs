@@ -125,7 +125,7 @@ impl Artefact for SweepFigure {
         write_provenance(name, &mut report, &runs, line.as_deref(), ctx)?;
         report.paper_claim = self.claim.to_string();
         if self.plot.x == Abscissa::Severity {
-            report.ours.push_str(&severity_summary(&runs));
+            report.ours.push_str(&severity_summary(&runs, self.plot.y));
             report.headline = Some(report.ours.clone());
         }
         Ok(report)

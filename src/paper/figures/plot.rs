@@ -36,7 +36,7 @@ impl Friction {
     }
 
     /// Its value for a solved case.
-    fn of(self, solved: &SolvedCase) -> f64 {
+    pub fn of(self, solved: &SolvedCase) -> f64 {
         match self {
             Friction::Sliding => solved.mu_bar_sliding,
             Friction::Total => solved.mu_bar_total(),
