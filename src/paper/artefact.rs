@@ -73,7 +73,7 @@ pub trait Artefact: Sync {
     }
 
     /// The sweep file of `cases/` it draws, if it draws one (the sweep figures): what
-    /// [`crate::paper::cases::shipped`] compiles in.
+    /// [`crate::paper::cases::shipped`] lists.
     fn sweep_file(&self) -> Option<SweepFile> {
         None
     }

@@ -1,7 +1,7 @@
 //! The paper's case definitions, shipped in `cases/` and compiled in, so the binary runs
 //! anywhere: the sweeps of Figs. 1-7 (`cases/*.toml`, the format of
-//! [`crate::pipeline::sweep`]), each named by the figure that draws it
-//! ([`crate::paper::figures::SweepFigure::sweep`]). Table 1 (`cases/lubricants.toml`) is read
+//! [`crate::pipeline::sweep`]), each compiled in by the figure that draws it (`sweep_file!` in
+//! its entry, `paper/figures/spec.rs`). Table 1 (`cases/lubricants.toml`) is read
 //! by [`crate::physics::lubricant::LubricantTable::table1`], the Appendix case
 //! (`cases/table4.toml`) by [`crate::paper::table4::Table4Case::shipped`].
 
