@@ -128,7 +128,7 @@ pub fn study(args: &RunArgs) -> Result<bool> {
         paper::figures::study(&stem, &sweep, ctx).with_context(|| args.file.display().to_string())
     })?;
     built.seconds = t.elapsed().as_secs_f64();
-    println!("{}", summary_line(&built).replacen("study", &stem, 1));
+    println!("{}", summary_line(&built));
     println!("mastercurve (paper: c = 5): {}", built.ours);
     Ok(built.solved == Some(built.cases))
 }

@@ -6,6 +6,7 @@ use crate::paper::mastercurve::fit::{fit, Fit, FIT_TAU_C_MIN};
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
+use crate::pipeline::sweep::{Sweep, SweepError};
 
 /// The paper's working level (256 x 256), the default of every computed figure.
 pub const WORKING_LEVEL: u32 = 7;
@@ -14,6 +15,44 @@ pub const WORKING_LEVEL: u32 = 7;
 /// level 11 on the heaviest Table 3 case (docs/LINE_NOTES.md), a few tenths of a second per
 /// case.
 pub const LINE_LEVEL: u32 = 8;
+
+/// A sweep file shipped in `cases/`, compiled in: `cases/<name>.toml`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct SweepFile {
+    /// Its name, the stem of its file.
+    pub name: &'static str,
+    /// Its text.
+    pub text: &'static str,
+}
+
+/// The [`SweepFile`] `cases/<name>.toml`, its text compiled in (the name written once, so
+/// that the name and the file cannot disagree).
+macro_rules! sweep_file {
+    ($name:literal) => {
+        $crate::paper::artefact::SweepFile {
+            name: $name,
+            text: include_str!(concat!(
+                env!("CARGO_MANIFEST_DIR"),
+                "/cases/",
+                $name,
+                ".toml"
+            )),
+        }
+    };
+}
+pub(crate) use sweep_file;
+
+impl SweepFile {
+    /// Its path in the crate, as errors name it.
+    pub fn path(&self) -> String {
+        format!("cases/{}.toml", self.name)
+    }
+
+    /// Its sweep.
+    pub fn parse(&self) -> Result<Sweep, SweepError> {
+        Sweep::parse(&self.path(), self.text)
+    }
+}
 
 /// A table or figure of the paper (or beyond it) as a named target: what `repro list` shows,
 /// what `repro <name>`, `repro all`, `repro check`, `--shard` and `--offline` run.
@@ -30,6 +69,12 @@ pub trait Artefact: Sync {
     /// at the paper's working level instead. `None`: the target solves nothing, or at levels
     /// of its own.
     fn default_level(&self) -> Option<u32> {
+        None
+    }
+
+    /// The sweep file of `cases/` it draws, if it draws one (the sweep figures): what
+    /// [`crate::paper::cases::shipped`] lists.
+    fn sweep_file(&self) -> Option<SweepFile> {
         None
     }
 
@@ -147,8 +192,8 @@ impl Measure {
 /// its section of `figures/index.html`.
 #[derive(Debug, Clone)]
 pub struct TargetReport {
-    /// Target name.
-    pub name: &'static str,
+    /// Target name (a registered target's, or the stem of a user's study).
+    pub name: String,
     /// Title.
     pub title: String,
     /// Cases computed or emitted.
@@ -176,9 +221,9 @@ pub struct TargetReport {
 
 impl TargetReport {
     /// The report of a target that emits `files` from `cases/` data (no solves).
-    pub fn emitted(name: &'static str, title: &str, cases: usize, files: Vec<String>) -> Self {
+    pub fn emitted(name: &str, title: &str, cases: usize, files: Vec<String>) -> Self {
         TargetReport {
-            name,
+            name: name.to_string(),
             title: title.to_string(),
             cases,
             solved: None,

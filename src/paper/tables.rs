@@ -161,8 +161,7 @@ fn table2(ctx: &Context) -> Result<TargetReport, PipelineError> {
             .cases
             .iter()
             .map(|c| {
-                Problem::from_case(c, &lubs)
-                    .map_err(|e| PipelineError::case(format!("cases/{}.toml", fig.sweep), e))
+                Problem::from_case(c, &lubs).map_err(|e| PipelineError::case(fig.sweep.path(), e))
             })
             .collect::<Result<_, _>>()?;
         let lubricant = match &sweep.cases[0].spec {

@@ -132,7 +132,7 @@ pub fn summary_csv(built: &[TargetReport]) -> String {
     rows(built.iter().map(|b| {
         let fit = b.eq13();
         SummaryRow {
-            target: b.name,
+            target: &b.name,
             cases: b.cases,
             solved: b.solved,
             cached: b.cached,
@@ -145,7 +145,7 @@ pub fn summary_csv(built: &[TargetReport]) -> String {
             fitted_c_low: fit.map(|f| f.c_low),
             fitted_c_high: fit.map(|f| f.c_high),
             fitted_c_all: b.eq13_c_all(),
-            refined_rms_rel_dev: refined_rms(built, b.name),
+            refined_rms_rel_dev: refined_rms(built, &b.name),
             hc_err_median: spread(b, |e| e.h_central).map(|s| s.median),
             hc_err_worst: spread(b, |e| e.h_central).map(|s| s.worst),
             hc_err_worst_case: spread(b, |e| e.h_central).map(|s| s.worst_case),
@@ -172,7 +172,7 @@ fn measures_table(built: &[TargetReport]) -> String {
         .filter_map(|b| {
             let f = b.eq13()?;
             let pct = |v: f64| format!("{} %", human(100.0 * v));
-            let refined = refined_rms(built, b.name).map(pct).unwrap_or_default();
+            let refined = refined_rms(built, &b.name).map(pct).unwrap_or_default();
             Some(format!(
                 "<tr><td><a href=\"#{name}\">{name}</a></td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{} ({} to {})</td><td>{refined}</td></tr>\n",
                 f.points,
@@ -183,7 +183,7 @@ fn measures_table(built: &[TargetReport]) -> String {
                 human(f.c),
                 human(f.c_low),
                 human(f.c_high),
-                name = escape(b.name),
+                name = escape(&b.name),
             ))
         })
         .collect();
@@ -208,7 +208,7 @@ mastercurve section, fitted without the figure it is tested on.</p>\n\
 fn section(b: &TargetReport, read: &dyn Fn(&str) -> Option<String>) -> String {
     let mut s = format!(
         "<section id=\"{name}\">\n<h2>{title}</h2>\n<dl>\n<dt>paper</dt><dd>{claim}</dd>\n<dt>ours</dt><dd>{ours}</dd>\n",
-        name = escape(b.name),
+        name = escape(&b.name),
         title = escape(&b.title),
         claim = escape(&b.paper_claim),
         ours = escape(&b.ours),
@@ -223,7 +223,7 @@ fn section(b: &TargetReport, read: &dyn Fn(&str) -> Option<String>) -> String {
     if let Some(l) = b.level {
         facts.push(format!("level {l}"));
     }
-    if let Some(l) = find(b.name).and_then(|a| a.default_level()) {
+    if let Some(l) = find(&b.name).and_then(|a| a.default_level()) {
         facts.push(format!(
             "cheapest level with mu-bar within 1 % (repro accuracy): {l}"
         ));
@@ -305,7 +305,7 @@ claims quoted as &ldquo;paper&rdquo;.</p>\n<ul>\n",
     for b in built {
         page.push_str(&format!(
             "<li><a href=\"#{0}\">{1}</a></li>\n",
-            escape(b.name),
+            escape(&b.name),
             escape(&b.title)
         ));
     }
@@ -339,9 +339,9 @@ mod tests {
     use super::*;
     use crate::paper::mastercurve::fit::Fit;
 
-    fn built(name: &'static str, files: &[&str], fit: Option<Fit>) -> TargetReport {
+    fn built(name: &str, files: &[&str], fit: Option<Fit>) -> TargetReport {
         TargetReport {
-            name,
+            name: name.to_string(),
             title: format!("{name} <title>"),
             cases: 3,
             solved: Some(2),

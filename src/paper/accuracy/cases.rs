@@ -4,6 +4,7 @@
 use crate::paper::cases::shipped_sweep;
 use crate::paper::figures::line::table3_line_cases;
 use crate::paper::table4::Table4Case;
+use crate::paper::REGISTRY;
 use crate::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use crate::physics::density::DensityLaw;
 use crate::physics::line_contact::LineProblem;
@@ -114,13 +115,29 @@ pub struct AccuracyCase {
     pub name: &'static str,
     /// What it is.
     pub description: &'static str,
-    /// The targets it stands for when the level of each is recommended.
-    pub targets: &'static [&'static str],
+    /// The shipped sweeps it stands for (`cases/<name>.toml`): the level recommended for
+    /// every target that draws one of them ([`AccuracyCase::targets`]).
+    pub sweeps: &'static [&'static str],
     /// Added to the study's levels: a 1-D level costs so little that the line contact is
     /// studied on finer grids (its level `n + offset` stands beside the point level `n`).
     pub level_offset: u32,
     /// The contact.
     pub contact: AccuracyProblem,
+}
+
+impl AccuracyCase {
+    /// The targets it stands for: those that draw one of its sweeps, in the registry's order
+    /// (a figure added on a sweep the study covers is covered without a word here).
+    pub fn targets(&self) -> Vec<&'static str> {
+        REGISTRY
+            .iter()
+            .filter(|a| {
+                a.sweep_file()
+                    .is_some_and(|f| self.sweeps.contains(&f.name))
+            })
+            .map(|a| a.name())
+            .collect()
+    }
 }
 
 /// The parameters the figure targets use (the rule, [`point::Params::for_problem`]),
@@ -220,10 +237,10 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
     };
     let case23 = table2_case("fig6", "5p4e", 40.0, 1e9, 12.0, 0.005, 6e6)?;
     let case221 = table2_case("fig4", "mineral-oil-a", 100.0, 3e9, 2.0, 0.005, 6e6)?;
-    // (name, description, targets, case): every point contact with the figures' parameters.
+    // (name, description, sweeps, case): every point contact with the figures' parameters.
     let points: [(&'static str, &'static str, &'static [&'static str], &Case); 7] = [
-        ("light-barus", "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)", &["fig1", "fig2", "fig3"], &light),
-        ("heavy-barus", "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)", &["fig1", "fig2", "fig3"], &heavy),
+        ("light-barus", "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)", &["fig1-3"], &light),
+        ("heavy-barus", "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)", &["fig1-3"], &heavy),
         ("table4", "Appendix case: mineral oil A, 3 GPa, 40 C, Roelands, Dowson-Higginson, Eyring", &["fig4", "fig5", "fig6"], &table4),
         ("ellipse-1/5", "Rx/Ry = 1/5, mineral oil A, 3 GPa, 60 C, 12 m/s, S 0.1 %, tau0 4 MPa (Table 3)", &["fig7"], &ellipse),
         ("light-far-field", "Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa (M 4.76, L 57, far field)", &["fig4", "fig5", "fig6"], &case23),
@@ -232,11 +249,11 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
     ];
     let mut cases = points
         .into_iter()
-        .map(|(name, description, targets, case)| {
+        .map(|(name, description, sweeps, case)| {
             Ok(AccuracyCase {
                 name,
                 description,
-                targets,
+                sweeps,
                 level_offset: 0,
                 contact: AccuracyProblem::Point {
                     problem: Box::new(
@@ -261,7 +278,7 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
             name: "line",
             description:
                 "line contact, mineral oil A, 3 GPa, 40 C, 7 m/s, S 0.1 %, tau0 8 MPa (Table 3)",
-            targets: &["fig7"],
+            sweeps: &["fig7"],
             level_offset: 2,
             contact: AccuracyProblem::Line {
                 problem: Box::new(problem),
@@ -270,4 +287,37 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
         });
     }
     Ok(cases)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each case stands for the figures that draw its sweeps, in the registry's order: the
+    /// rows of `figures/accuracy_levels.csv` (fig1 to fig7) and the case that decides each
+    /// come out as they did when the targets were listed by name, and the one case that stands
+    /// for no figure (the light end of the envelope) stands for none.
+    #[test]
+    fn each_case_stands_for_the_figures_that_draw_its_sweeps() {
+        let by_case: Vec<(&str, Vec<&str>)> = accuracy_cases(true)
+            .unwrap()
+            .iter()
+            .map(|c| (c.name, c.targets()))
+            .collect();
+        let barus = vec!["fig1", "fig2", "fig3"];
+        let table2 = vec!["fig4", "fig5", "fig6"];
+        assert_eq!(
+            by_case,
+            vec![
+                ("light-barus", barus.clone()),
+                ("heavy-barus", barus),
+                ("table4", table2.clone()),
+                ("ellipse-1/5", vec!["fig7"]),
+                ("light-far-field", table2),
+                ("m1-l10", vec![]),
+                ("heavy-m19205", vec!["fig4"]),
+                ("line", vec!["fig7"]),
+            ]
+        );
+    }
 }

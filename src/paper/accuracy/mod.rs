@@ -2,8 +2,9 @@
 //! central film and sliding `mu-bar` compared with a Richardson extrapolation of the two
 //! finest levels, against the wall time of its solve (`repro accuracy`).
 //!
-//! A case of the study is an [`AccuracyCase`] (`cases.rs`): a name, the targets it stands
-//! for, and an [`AccuracyProblem`] that knows how to solve itself at a level. Adding a case
+//! A case of the study is an [`AccuracyCase`] (`cases.rs`): a name, the shipped sweeps it
+//! stands for (and so the targets that draw them), and an [`AccuracyProblem`] that knows how
+//! to solve itself at a level. Adding a case
 //! is adding one entry to [`cases::accuracy_cases`]; the rest (errors here, the files in
 //! `files.rs`, the picture in `picture.rs`, the recommended level per target) is shared.
 //!
@@ -81,8 +82,8 @@ pub struct AccuracyResult {
     pub description: &'static str,
     /// "point" or "line".
     pub kind: &'static str,
-    /// The targets it stands for.
-    pub targets: &'static [&'static str],
+    /// The targets it stands for ([`AccuracyCase::targets`]).
+    pub targets: Vec<&'static str>,
     /// Its level offset (see [`AccuracyCase::level_offset`]).
     pub level_offset: u32,
     /// Levels, coarse to fine.
@@ -235,7 +236,7 @@ pub fn run(
                 name: case.name,
                 description: case.description,
                 kind: case.contact.kind(),
-                targets: case.targets,
+                targets: case.targets(),
                 level_offset: case.level_offset,
                 reference: reference(&runs),
                 domain: DomainCheck::of(case, &runs),
@@ -267,7 +268,7 @@ pub struct Recommendation {
 pub fn recommend(studies: &[AccuracyResult], tol: f64) -> Vec<Recommendation> {
     let mut targets: Vec<&'static str> = Vec::new();
     for s in studies {
-        for t in s.targets {
+        for t in &s.targets {
             if !targets.contains(t) {
                 targets.push(t);
             }
@@ -330,7 +331,7 @@ pub(crate) mod tests {
             name: "t",
             description: "",
             kind: "point",
-            targets: &["fig3"],
+            targets: vec!["fig3"],
             level_offset: 0,
             reference: reference(&levels),
             domain: None,

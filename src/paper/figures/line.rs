@@ -1,7 +1,7 @@
 //! The line contacts of Fig. 7: the five Table 3 load cases of `cases/fig7.toml` (mineral oil
 //! A, Roelands, Dowson-Higginson, Eyring) without their `Ry`, solved by the 1-D solver.
 
-use crate::paper::cases::shipped_sweep;
+use super::spec::FIG7;
 use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::line_flat;
 use crate::physics::case::{CaseForm, Physics};
@@ -21,7 +21,7 @@ use serde::Serialize;
 /// Figs. 4-7. The rows are read from the shipped `cases/fig7.toml` (its `D = 1/2` block), the
 /// one source of truth for Table 3.
 pub fn table3_line_cases() -> Result<(Vec<LinePhysicalCase>, Physics), PipelineError> {
-    let sweep = shipped_sweep("fig7")?;
+    let sweep = FIG7.sweep.parse()?;
     let lubs = LubricantTable::table1();
     let mut out: Vec<LinePhysicalCase> = Vec::new();
     for c in &sweep.cases {

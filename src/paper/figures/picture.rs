@@ -1,11 +1,10 @@
 //! The pictures of the computed figures, in the paper's form: Fig. 1 on a log `x` axis,
 //! Figs. 2-7 `mu-bar` against `tau_c` on log-linear axes with Eq. (13) dashed. Series are split
-//! by the case's defining parameter so that the collapse (or not) is visible.
+//! as the figure says ([`SeriesBy`]) so that the collapse (or not) is visible.
 
-use super::Plot;
+use super::plot::{Plot, SeriesBy};
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::eq13_curve;
-use crate::physics::case::CaseForm;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
@@ -18,47 +17,22 @@ const MARKERS: [Marker; 5] = [
     Marker::Cross,
 ];
 
-/// The series key of a case: `L` for the Barus sweep, temperature for the lubricant sweeps,
-/// `Rx/Ry` for Fig. 7.
-fn series_key(name: &str, run: &PointRun) -> String {
-    let g = &run.problem.groups;
-    match name {
-        "fig1" | "fig2" | "fig3" => format!("L = {}", g.l),
-        "fig7" => format!(
-            "Rx/Ry = {}",
-            if (g.d - 0.5).abs() < 1e-9 {
-                "1/2".to_string()
-            } else if (g.d - 0.2).abs() < 1e-9 {
-                "1/5".to_string()
-            } else {
-                format!("{:.3}", g.d)
-            }
-        ),
-        _ => match &run.case.spec {
-            CaseForm::Physical(p) => match p.lubricant.temperature_c() {
-                Some(t) => format!("{t} °C"),
-                None => "given lubricant".into(),
-            },
-            CaseForm::Dimensionless(_) => "dimensionless".into(),
-        },
-    }
-}
-
 /// Renders figure `name` with `title` from its runs, each solved case's point as `plot` draws
-/// it with its discretisation error as an error bar, and `extra` series (the line contacts of
-/// Fig. 7, the paper's setup beside Fig. 6) drawn after them, with their note.
+/// it with its discretisation error as an error bar, in series split by `series_by`, and
+/// `extra` series (the line contacts of Fig. 7, the paper's setup beside Fig. 6) drawn after
+/// them, with their note.
 pub fn svg(
     name: &str,
     title: &str,
     runs: &[PointRun],
-    plot: Plot,
+    (plot, series_by): (Plot, SeriesBy),
     (extra, beside_note): (&[Series], Option<String>),
 ) -> Result<Option<String>, PipelineError> {
     let mut keys: Vec<String> = Vec::new();
     let mut series: Vec<Series> = Vec::new();
     for r in runs {
         let Some(p) = plot.xy(r) else { continue };
-        let key = series_key(name, r);
+        let key = series_by.key(&r.case, &r.problem);
         let i = match keys.iter().position(|k| *k == key) {
             Some(i) => i,
             None => {
@@ -93,21 +67,12 @@ pub fn svg(
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
             (a.min(x), b.max(x))
         });
-    let curves = if plot.severity || xs.is_empty() {
-        Vec::new()
-    } else {
+    let curves = if plot.on_eq13() && !xs.is_empty() {
         vec![eq13_curve(x_min, x_max, PAPER_C, 200)]
-    };
-    let y_label = if plot.total {
-        "total reduced friction μ̄"
     } else {
-        "sliding reduced friction μ̄"
+        Vec::new()
     };
-    let x_label = if plot.severity {
-        "S̄^{1/4} M L^{3}"
-    } else {
-        "characteristic shear stress τ̄_{c}"
-    };
+    let (x_label, y_label) = plot.labels();
     let failed_note = (failed > 0).then(|| {
         format!(
             "{failed} of {} cases failed (not converged or film collapse); not shown",

@@ -2,7 +2,7 @@
 //! solve gave (or why it failed), the figure's x and y, the flat-film oracle and the thermal
 //! post-process.
 
-use super::Plot;
+use super::plot::Plot;
 use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::point_flat;
 use crate::physics::case::{Case, CaseForm, LubricantSpec};
@@ -220,11 +220,7 @@ impl FigureRow {
 
 /// The figure's CSV, its x and y columns named for what `plot` draws.
 pub fn csv(runs: &[PointRun], plot: Plot) -> String {
-    let (x, y) = match (plot.severity, plot.total) {
-        (true, _) => ("s_bar_quarter_m_l3", "mu_bar_total"),
-        (false, true) => ("tau_c_x", "mu_bar_total_y"),
-        (false, false) => ("tau_c_x", "mu_bar_sliding_y"),
-    };
+    let (x, y) = plot.columns();
     rows_renamed(
         runs.iter()
             .enumerate()

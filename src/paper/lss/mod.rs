@@ -12,7 +12,6 @@
 pub mod form;
 
 use crate::paper::artefact::{Artefact, TargetReport};
-use crate::paper::cases::shipped_sweep;
 use crate::paper::figures::{run_sweep, study_jobs, write_provenance, FIG4};
 use crate::paper::lss::form::{fit, saturated, FormFit, FormPoint};
 use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
@@ -39,7 +38,7 @@ pub const LAMBDA_BARS: [f64; 4] = [5.0, 10.0, 20.0, 40.0];
 pub const TAU_L0_OVER_TAU0: f64 = 1.0;
 
 /// The Eyring sweep: Fig. 4's, whose cache entries it shares.
-const SWEEP: &str = FIG4.sweep;
+const SWEEP: &str = FIG4.sweep.name;
 
 /// Hertzian area over load of a circular contact: `A / W = pi / (2 pi / 3)`.
 const HERTZ_AREA_OVER_LOAD: f64 = 1.5;
@@ -64,7 +63,7 @@ fn limited(case: &Case, lambda_bar: f64) -> Result<Case, PipelineError> {
 /// as Fig. 4 takes them, so that they are Fig. 4's cache entries), as a sweep, with their
 /// 1-based case numbers in `cases/fig4.toml`.
 fn eyring_selection(ctx: &Context) -> Result<(Sweep, Vec<usize>), PipelineError> {
-    let mut sweep = shipped_sweep(SWEEP)?;
+    let mut sweep = FIG4.sweep()?;
     let stride = ctx.stride_for(sweep.cases.len());
     let numbers: Vec<usize> = (0..sweep.cases.len())
         .step_by(stride)
@@ -428,7 +427,7 @@ mod tests {
 
     #[test]
     fn limited_cases_carry_their_lambda_bar_and_their_own_cache_keys() {
-        let sweep = shipped_sweep(SWEEP).unwrap();
+        let sweep = FIG4.sweep().unwrap();
         let lubs = LubricantTable::table1();
         let params = Params::at_level(5);
         let eyring = &sweep.cases[100];

@@ -36,6 +36,8 @@ const FIGURES: [&SweepFigure; 5] = [&FIG3, &FIG4, &FIG5, &FIG6, &FIG7];
 struct FitCase {
     sample: Sample,
     contact: &'static str,
+    /// Its series in the picture: its figure's heading, or the line contacts.
+    series: &'static str,
     case: usize,
     tau_c: f64,
     m: f64,
@@ -63,6 +65,7 @@ fn collect(ctx: &Context) -> Result<Vec<FitCase>, PipelineError> {
                     mu_bar: rec.mu_bar_sliding,
                 },
                 contact: "elliptical",
+                series: fig.heading,
                 case: i + 1,
                 tau_c,
                 m: r.problem.groups.m,
@@ -89,11 +92,12 @@ fn collect(ctx: &Context) -> Result<Vec<FitCase>, PipelineError> {
         }
         rows.push(FitCase {
             sample: Sample {
-                figure: "fig7",
+                figure: FIG7.name,
                 features: Features::line(&r.problem),
                 mu_bar: s.mu_bar_sliding,
             },
             contact: "line",
+            series: "line contact",
             case: i + 1,
             tau_c,
             m: r.problem.groups.m,
@@ -275,10 +279,7 @@ fn build(ctx: &Context) -> Result<TargetReport, PipelineError> {
         .iter()
         .zip(&cv)
         .map(|(r, cv)| CasePoint {
-            series: match r.contact {
-                "line" => "line contact".into(),
-                _ => r.sample.figure.replace("fig", "Fig. "),
-            },
+            series: r.series.into(),
             tau_c: r.tau_c,
             mu_bar: r.sample.mu_bar,
             refined_cv: *cv,

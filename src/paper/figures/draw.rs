@@ -1,0 +1,190 @@
+//! A sweep drawn as a figure: its cases run through the cache, its CSV and picture written,
+//! its points measured against Eq. (13) ([`sweep_figure`]), as the paper's figures and a
+//! user's study alike describe it ([`Drawing`]).
+
+use super::plot::{Friction, Plot, SeriesBy};
+use super::run::{run_sweep, selection};
+use super::{picture, rows};
+use crate::paper::artefact::{Measure, TargetReport};
+use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
+use crate::pipeline::context::Context;
+use crate::pipeline::error::PipelineError;
+use crate::pipeline::executor::{run_cases_in, PointRun, RunProgress};
+use crate::pipeline::job::Setup;
+use crate::pipeline::outcome::CaseOutcome;
+use crate::pipeline::sweep::Sweep;
+use crate::plot::{Marker, Series};
+
+/// How a sweep is drawn: a figure of the paper ([`super::SweepFigure::drawing`]) or a user's
+/// study ([`super::study`]).
+pub struct Drawing<'a> {
+    /// The target's name, the stem of its files.
+    pub stem: &'a str,
+    /// Its name in the picture's title and the report.
+    pub heading: &'a str,
+    /// What it plots.
+    pub plot: Plot,
+    /// How its cases split into series.
+    pub series: SeriesBy,
+    /// Its level where neither the context nor the sweep sets one.
+    pub default_level: Option<u32>,
+    /// Series drawn and measured against Eq. (13) with its cases (Fig. 7's line contacts).
+    pub fitted: Vec<Series>,
+    /// Also solve the cases in the paper's setup and draw them where they differ
+    /// ([`super::SweepFigure::paper_setup`]); not measured.
+    pub paper_setup: bool,
+}
+
+/// The cases of `paper` (the paper's setup) whose plotted friction differs from the rule's
+/// solve of the same case (`runs`, in the same order) by more than its error bar (or, where
+/// not estimated, by more than 1 %), as one series, and how many they are.
+fn paper_setup_series(runs: &[PointRun], paper: &[PointRun], plot: Plot) -> (Series, usize) {
+    let points: Vec<(f64, f64)> = runs
+        .iter()
+        .zip(paper)
+        .filter_map(|(r, p)| {
+            let (x, y) = plot.xy(r)?;
+            let (_, y_paper) = plot.xy(p)?;
+            let bar = r
+                .solved()
+                .and_then(|s| plot.y_error(s))
+                .unwrap_or(0.01 * y.abs());
+            ((y_paper - y).abs() > bar).then_some((x, y_paper))
+        })
+        .collect();
+    let shown = points.len();
+    let series = Series {
+        label: "paper's setup (P = 0, its domain)".into(),
+        points,
+        marker: Marker::Circle,
+        ..Series::default()
+    };
+    (series, shown)
+}
+
+/// Runs `sweep` at the context's level (else the sweep's, else the drawing's), writes
+/// `<stem>.csv` and `<stem>.svg` (titled after its heading), measures the points against
+/// Eq. (13) where its x is `tau_c`.
+pub fn sweep_figure(
+    drawing: &Drawing,
+    sweep: &Sweep,
+    ctx: &Context,
+) -> Result<(TargetReport, Vec<PointRun>), PipelineError> {
+    let Drawing {
+        stem,
+        heading,
+        plot,
+        default_level,
+        ..
+    } = *drawing;
+    let (runs, level) = run_sweep(stem, sweep, default_level, ctx)?;
+    let extra = &drawing.fitted;
+    for (i, r) in runs.iter().enumerate() {
+        if let CaseOutcome::Failed(f) = &r.outcome {
+            (ctx.warn)(format!(
+                "{stem}: case {} (M {:.4}, L {:.4}, S-bar {:.3e}) failed: {}",
+                i + 1,
+                r.problem.groups.m,
+                r.problem.groups.l,
+                r.problem.groups.s_bar,
+                f.error
+            ));
+        }
+    }
+    let csv = ctx.write(&format!("{stem}.csv"), &rows::csv(&runs, plot))?;
+    let points: Vec<(f64, f64)> = runs
+        .iter()
+        .filter_map(|r| plot.xy(r).map(|p| (r.problem.tau_c(), p.1)))
+        .chain(extra.iter().flat_map(|e| e.points.iter().copied()))
+        .collect();
+    let mut measures = if plot.on_eq13() {
+        Measure::eq13(&points)
+    } else {
+        Vec::new()
+    };
+    measures.extend(plot.error_summary(&runs).map(Measure::DiscretisationError));
+    let mut files = vec![csv];
+    let mut drawn = extra.clone();
+    let mut note = None;
+    if drawing.paper_setup {
+        let (cases, _) = selection(sweep, default_level, ctx);
+        let progress = |p: RunProgress| (ctx.progress)(&format!("{stem}-paper-setup"), p);
+        let paper = run_cases_in(
+            stem,
+            (&cases, level, Setup::Paper),
+            ctx.cache_policy(),
+            &progress,
+            ctx.warn,
+        )?;
+        files.push(ctx.write(&format!("{stem}-paper-setup.csv"), &rows::csv(&paper, plot))?);
+        let (series, shown) = paper_setup_series(&runs, &paper, plot);
+        note = Some(format!(
+            "\"paper's setup\": P = 0 on the paper's domain, Eq. (8) over it, for the {shown} \
+             cases where it differs from the flooded contact by more than the error bar"
+        ));
+        drawn.push(series);
+    }
+    if let Some(svg) = picture::svg(
+        stem,
+        &format!("{heading} — {}", sweep.title),
+        &runs,
+        (plot, drawing.series),
+        (&drawn, note),
+    )? {
+        files.push(ctx.write(&format!("{stem}.svg"), &svg)?);
+    }
+    let solved = runs.iter().filter(|r| r.solved().is_some()).count();
+    let cached = runs.iter().filter(|r| r.cached).count();
+    let report = TargetReport {
+        measures,
+        ..TargetReport::emitted(
+            stem,
+            &format!("{heading}: {}", sweep.title),
+            runs.len(),
+            files,
+        )
+    };
+    let eq13 = report.eq13().copied();
+    let ours = match eq13 {
+        Some(f) => format!(
+            "{} points with tau_c >= {FIT_TAU_C_MIN}: {}; c = {:.2} over all {solved} solved",
+            f.points,
+            f.describe(),
+            report.eq13_c_all().unwrap_or(f64::NAN),
+        ),
+        None => format!("{solved} of {} cases solved", runs.len()),
+    };
+    let report = TargetReport {
+        solved: Some(solved),
+        cached: Some(cached),
+        level: Some(level),
+        headline: eq13.as_ref().map(Fit::describe),
+        ours,
+        ..report
+    };
+    Ok((report, runs))
+}
+
+/// Fig. 1's collapse: the scatter of the plotted `mu-bar` (`y`; total for Fig. 1) ordered by
+/// the paper's `S-bar^(1/4) M L^3` against the exponents of `S-bar^a M L^c` that collapse our
+/// points best.
+pub fn severity_summary(runs: &[PointRun], y: Friction) -> String {
+    let cases: Vec<(f64, f64, f64, f64)> = runs
+        .iter()
+        .filter_map(|r| {
+            let g = &r.problem.groups;
+            r.solved().map(|rec| (g.s_bar, g.m, g.l, y.of(rec)))
+        })
+        .collect();
+    let mut paper: Vec<(f64, f64)> = cases
+        .iter()
+        .map(|&(s, m, l, mu)| (0.25 * s.ln() + m.ln() + 3.0 * l.ln(), mu))
+        .collect();
+    let paper_scatter = crate::paper::mastercurve::fit::scatter(&mut paper);
+    match crate::paper::mastercurve::fit::severity_exponents(&cases) {
+        Some((a, c, best)) => format!(
+            "; scatter about one curve (0 = a curve, 2 = random) {paper_scatter:.3} with the paper's S-bar^(1/4) M L^3, {best:.3} with the best exponents S-bar^{a:.2} M L^{c:.1}"
+        ),
+        None => String::new(),
+    }
+}
