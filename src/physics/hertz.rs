@@ -6,6 +6,10 @@
 
 use std::f64::consts::PI;
 
+/// The dimensionless load of the force balance, Eq. (7): the Hertzian pressure
+/// `sqrt(1 - X^2 - Y^2)` integrated over the unit circle, `int P dX dY = 2 pi / 3`.
+pub const DIMENSIONLESS_LOAD: f64 = 2.0 * PI / 3.0;
+
 /// Complete elliptic integrals `(K, E)` of the Nomenclature, with parameter `1 - kappa^2`:
 /// `K = int_0^{pi/2} (1 - (1-kappa^2) sin^2 psi)^{-1/2} dpsi`, `E` likewise with the power 1/2.
 ///

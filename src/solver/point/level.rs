@@ -14,7 +14,7 @@ use crate::solver::grid::Grid;
 const LN_ETA_MAX: f64 = 700.0;
 
 /// The dimensionless load of the force balance, Eq. (7): `int P dX dY = 2 pi / 3`.
-pub(crate) const LOAD: f64 = 2.0 * std::f64::consts::PI / 3.0;
+pub(crate) use crate::physics::hertz::DIMENSIONLESS_LOAD as LOAD;
 
 /// The parts of the dimensionless problem the discrete equations use.
 #[derive(Debug, Clone, Copy)]

@@ -45,7 +45,9 @@ use level::Model;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
 pub(crate) use level::LOAD;
 use multigrid::Hierarchy;
+use nested::Surround;
 pub use params::{Edge, Params};
+use std::sync::Arc;
 use std::time::Instant;
 use stopping::Known;
 pub use warm::Start;
@@ -116,18 +118,17 @@ const DIRECT_FINISH_RESIDUAL: f64 = 1e-3;
 /// (directly, or grid-sequenced); `history` holds what came before (a failed warm start).
 fn converge_cold(
     problem: &Problem,
-    params: &Params,
+    (params, surround): (&Params, Option<&Arc<Surround>>),
     observe: &mut dyn FnMut(&Progress),
     mut history: Vec<f64>,
 ) -> Result<(Hierarchy, Converged), SolveError> {
     let g = &problem.groups;
     // Initial Delta: the Eq. (10) central film minus the Hertzian approach (W(0) = 1).
     // A nested domain starts from its surroundings: their pressure and film constant.
-    let surround = params.surround.as_ref().map(|s| s.0.clone());
     let h0 = surround
         .as_ref()
         .map_or(hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0, |s| s.delta());
-    let mut mg = hierarchy(problem, params, h0);
+    let mut mg = hierarchy(problem, params, surround, h0);
     let top = mg.levels.len() - 1;
     // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
     // from the interpolated solution of the one below; each level's state after its cycles
@@ -135,7 +136,7 @@ fn converge_cold(
     {
         let l0 = &mut mg.levels[0];
         let grid = l0.grid;
-        l0.p = match &surround {
+        l0.p = match surround {
             Some(s) => grid.sample(|x, y| s.pressure(x, y)),
             None => grid.sample(crate::physics::hertz::Hertz::pressure),
         };
@@ -228,7 +229,19 @@ pub fn solve(
     params: &Params,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    solve_with(problem, params, None, observer)
+    solve_with(problem, (params, None), None, observer)
+}
+
+/// Solves `problem` with `params` on a nested domain (`params.domain`, its edges on grid lines
+/// of the solution around it) inside `surround` ([`nested`]; a prototype of issue 39), cold
+/// from the surroundings' pressure.
+pub fn solve_nested(
+    problem: &Problem,
+    params: &Params,
+    surround: &Arc<Surround>,
+    observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
+    solve_with(problem, (params, Some(surround)), None, observer)
 }
 
 /// Solves `problem` with `params` from `start`, the converged solution of a related case (its
@@ -241,7 +254,7 @@ pub fn solve_from(
     start: &Start,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    solve_with(problem, params, Some(start), observer)
+    solve_with(problem, (params, None), Some(start), observer)
 }
 
 /// What converged the top level: its cycles, history, method and Newton work.
@@ -255,9 +268,14 @@ struct Converged {
     coarser: Vec<CoarseSolution>,
 }
 
-/// A hierarchy for `problem` on `params`' levels and domain, the far field of its edge, and
-/// the film constant `h0`.
-fn hierarchy(problem: &Problem, params: &Params, h0: f64) -> Hierarchy {
+/// A hierarchy for `problem` on `params`' levels and domain, the far field of its edge (or
+/// the surroundings `surround` of a nested domain), and the film constant `h0`.
+fn hierarchy(
+    problem: &Problem,
+    params: &Params,
+    surround: Option<&Arc<Surround>>,
+    h0: f64,
+) -> Hierarchy {
     let model = Model::new(problem);
     let g = &problem.groups;
     // Without the far field: its lambda-0 form, zero everywhere.
@@ -267,7 +285,7 @@ fn hierarchy(problem: &Problem, params: &Params, h0: f64) -> Hierarchy {
         g.lambda
     };
     let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity)
-        .with_surround(params.surround.as_ref().map(|s| s.0.clone()));
+        .with_surround(surround.cloned());
     let mut mg = Hierarchy::new(model, far, &params.domain, params, h0);
     mg.rolling_scale = params.rolling_friction.then(|| g.rolling_stress_scale());
     mg
@@ -275,7 +293,7 @@ fn hierarchy(problem: &Problem, params: &Params, h0: f64) -> Hierarchy {
 
 fn solve_with(
     problem: &Problem,
-    params: &Params,
+    (params, surround): (&Params, Option<&Arc<Surround>>),
     warm_start: Option<&Start>,
     mut observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
@@ -315,7 +333,7 @@ fn solve_with(
     let (params, mut mg, run) = match (warm_run, &warm_params) {
         (Some((mg, run)), Some((_, p))) => (p, mg, run),
         _ => {
-            let (mg, mut run) = converge_cold(problem, params, &mut observe, tried)?;
+            let (mg, mut run) = converge_cold(problem, (params, surround), &mut observe, tried)?;
             if warm_params.is_some() {
                 run.start = StartKind::Fallback;
             }

@@ -8,11 +8,10 @@
 //! solution's cells between inside and outside is exact up to the half cell along the edge,
 //! which the nested grid's own boundary nodes cover ([`Surround::new`]).
 
-use super::level::{Model, LOAD};
 use crate::physics::case::Problem;
+use crate::physics::hertz::DIMENSIONLESS_LOAD as LOAD;
 use crate::solver::deformation::Deformation;
 use crate::solver::grid::{Domain, Grid};
-use std::sync::Arc;
 
 /// A converged whole-domain solution as the surroundings of a nested rectangle.
 pub struct Surround {
@@ -37,16 +36,6 @@ impl std::fmt::Debug for Surround {
             .field("inner", &self.inner)
             .field("outside_load", &self.outside_load)
             .finish()
-    }
-}
-
-/// A shared [`Surround`], equal by identity (for [`super::Params`]).
-#[derive(Debug, Clone)]
-pub struct SurroundRef(pub Arc<Surround>);
-
-impl PartialEq for SurroundRef {
-    fn eq(&self, other: &Self) -> bool {
-        Arc::ptr_eq(&self.0, &other.0)
     }
 }
 
@@ -179,7 +168,7 @@ impl Surround {
     /// The sliding `mu-bar` the wide solution adds outside the nested grid's interior cells,
     /// over the loaded film `H <= h_limit` (Eq. 8, over the applied load).
     pub fn outside_sliding(&self, problem: &Problem, h_limit: f64) -> f64 {
-        let model = Model::new(problem);
+        let n_s = problem.eyring_n_s();
         let g = &self.wide;
         let mut sum = 0.0;
         for j in 1..g.ny {
@@ -190,9 +179,9 @@ impl Surround {
                     continue;
                 }
                 sum += self.cover_share[k]
-                    * model
-                        .rheology
-                        .mean_shear_stress(model.n_s * model.eta(p) / h, p);
+                    * problem
+                        .shear
+                        .mean_shear_stress(n_s * problem.viscosity.eta_bar(p) / h, p);
             }
         }
         sum * g.hx * g.hy / LOAD
@@ -201,13 +190,12 @@ impl Surround {
 
 #[cfg(test)]
 mod tests {
-    use super::{bicubic, cubic_weights, Surround};
+    use super::{bicubic, cubic_weights, Surround, LOAD};
     use crate::physics::case::{Case, CaseForm, DimensionlessCase, Physics, Problem};
     use crate::physics::hertz::Hertz;
     use crate::physics::lubricant::LubricantTable;
     use crate::solver::deformation::Deformation;
     use crate::solver::grid::{Domain, Grid};
-    use crate::solver::point::level::LOAD;
 
     fn problem() -> Problem {
         let case = Case {

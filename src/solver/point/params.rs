@@ -132,8 +132,6 @@ pub struct Params {
     /// the numerics solve their levels themselves); a case is solved with 2, the three levels
     /// an observed order needs ([`Params::for_problem`]).
     pub error_levels: u32,
-    /// A wide solution around a nested domain ([`super::nested`]; prototype): `None`.
-    pub surround: Option<super::nested::SurroundRef>,
 }
 
 impl Default for Params {
@@ -167,7 +165,6 @@ impl Default for Params {
             require_positive_film: true,
             film_refinement_levels: 1,
             error_levels: 0,
-            surround: None,
         }
     }
 }

@@ -93,7 +93,7 @@ pub(super) fn converge(
     observe: &mut dyn FnMut(&Progress),
     tried: &mut Vec<f64>,
 ) -> Option<(Hierarchy, Converged)> {
-    let mut mg = hierarchy(problem, params, start.delta);
+    let mut mg = hierarchy(problem, params, None, start.delta);
     mg.warm = true;
     let top = mg.levels.len() - 1;
     // The pressure first, then the edge: the far field is put on the boundary for the
