@@ -13,6 +13,7 @@ mod common;
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::grid::{Domain, Grid};
+use repro::solver::output::Output;
 use repro::solver::point::nested::Surround;
 use repro::solver::point::{self, Params, LOADED_FILM_FACTOR};
 use std::sync::Arc;
@@ -64,7 +65,11 @@ fn main() {
         ));
         let mut params = Params::for_problem(&problem, il);
         params.domain = inner;
-        params.error_levels = 0;
+        // PROBE_ERROR_LEVELS: the coarser levels of the nested solve's error estimate.
+        params.error_levels = std::env::var("PROBE_ERROR_LEVELS")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(0);
         let t = Instant::now();
         let nested = point::solve_nested(&problem, &params, &surround, None).expect("nested solve");
         let nested_s = t.elapsed().as_secs_f64();
@@ -97,6 +102,21 @@ fn main() {
             nested.info.method,
             nested_s
         );
+        if let Some(errors) = &nested.errors {
+            for (name, output) in [("Hc", Output::HCentral), ("mu", Output::MuBarSliding)] {
+                if let Some(e) = errors.estimate(output) {
+                    let finest = errors.levels[errors.levels.len() - 1].get(output);
+                    println!(
+                        "      {name} levels {:?}: error {:.2} % (order {:?}, used {:.2}), extrapolated {:.6}",
+                        errors.levels.iter().map(|v| v.get(output)).collect::<Vec<_>>(),
+                        100.0 * e.error / finest.abs(),
+                        e.order,
+                        e.order_used,
+                        e.extrapolated
+                    );
+                }
+            }
+        }
         outer = nested;
     }
 }

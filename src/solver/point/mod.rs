@@ -12,6 +12,7 @@
 //! The domain defaults to the paper's `-2.5 <= X <= 1.5`, `-2 <= Y <= 2`
 //! ([`crate::solver::grid::Domain::default`]); level `n` has `2^(n+1)` intervals per direction.
 
+pub mod chain;
 mod cycles;
 mod edge;
 mod far_field;
