@@ -205,8 +205,29 @@ fn point_text(problem: &Problem, s: &PointSolution) -> String {
         s.friction.total(),
         tau_c,
         (tau_c / 5.0).asinh(),
-    ) + &point_report(problem, s).error_text()
+    ) + &nested_text(s)
+        + &point_report(problem, s).error_text()
         + &limit
+}
+
+/// The nested domains' line of a summary (empty on a single domain): the innermost grid's
+/// rectangle and mesh inside the case-sized domain's.
+fn nested_text(s: &PointSolution) -> String {
+    let Some(outer) = &s.surroundings else {
+        return String::new();
+    };
+    let describe = |g: &repro::solver::grid::Grid| {
+        let d = g.domain();
+        format!(
+            "X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4})",
+            d.x_start, d.x_end, d.y_half, g.hx
+        )
+    };
+    format!(
+        "nested      {} inside {}\n",
+        describe(&s.grid),
+        describe(&outer.grid)
+    )
 }
 
 /// `repro solve --line`: the line contact (Fig. 7) from the same flags.

@@ -6,12 +6,15 @@
 //! together, so that the surroundings' own error is part of it (docs/ACCURACY_NOTES.md, "Resolution where the contact needs it").
 
 use super::nested::Surround;
-use super::{solve, solve_nested, Params, PointSolution, LOADED_FILM_FACTOR};
+use super::{solve_with, Params, PointSolution, Start, LOADED_FILM_FACTOR};
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::SolveError;
+use crate::solver::output::{
+    Friction, LadderStop, LevelValues, Method, OutputErrors, Progress, SolveError,
+};
 use crate::solver::richardson::{estimate, ErrorEstimate};
 use std::sync::Arc;
+use std::time::Instant;
 
 /// The smallest rectangle of a chain: the Hertzian zone with the inlet's steep pressure rise.
 /// Case 23 reached it from `-4.5..1.5 x 3` 0.07 % from its grid-converged film.
@@ -79,28 +82,61 @@ impl Chain {
     /// grid's film, its friction plus each surroundings' outside it (Eq. 8, loaded film).
     pub fn outputs(&self, problem: &Problem) -> [f64; 3] {
         let inner = self.innermost();
-        let limit = LOADED_FILM_FACTOR * inner.film.h_central;
-        let outside: f64 = self
-            .surrounds
-            .iter()
-            .map(|s| s.outside_sliding(problem, limit))
-            .sum();
         [
             inner.film.hc_moes,
             inner.film.hmin_moes,
-            inner.friction.sliding + outside,
+            self.friction(problem).sliding,
         ]
+    }
+
+    /// The chain's friction: the innermost grid's plus each surroundings' outside it.
+    pub fn friction(&self, problem: &Problem) -> Friction {
+        let inner = self.innermost();
+        let limit = LOADED_FILM_FACTOR * inner.film.h_central;
+        let rolling = inner.friction.rolling.is_some();
+        self.surrounds.iter().fold(inner.friction, |f, s| {
+            let (sliding, outside_rolling) = s.outside_friction(problem, limit, rolling);
+            Friction {
+                sliding: f.sliding + sliding,
+                rolling: f.rolling.map(|r| r + outside_rolling.unwrap_or(0.0)),
+            }
+        })
+    }
+
+    /// The chain's values for the error estimate, in the solver's units.
+    fn level_values(&self, problem: &Problem) -> LevelValues {
+        let inner = self.innermost();
+        let friction = self.friction(problem);
+        LevelValues {
+            level: inner.info.level,
+            h_central: inner.film.h_central,
+            h_min: inner.film.h_min,
+            mu_bar_sliding: friction.sliding,
+            mu_bar_total: friction.total(),
+        }
     }
 }
 
 /// Solves `problem`'s chain at `params.level` on `params.domain` (the case-sized domain with
 /// its far field, [`Params::for_problem`]); no error estimate of its own.
 pub fn solve_chain(problem: &Problem, params: &Params) -> Result<Chain, SolveError> {
+    chain_from(problem, params, None, &mut |_| {})
+}
+
+/// [`solve_chain`], the case-sized domain from `start` where given (a related case's
+/// surroundings, [`Start`]), every solve heard by `observe`.
+fn chain_from(
+    problem: &Problem,
+    params: &Params,
+    start: Option<&Start>,
+    observe: &mut dyn FnMut(&Progress),
+) -> Result<Chain, SolveError> {
     let params = Params {
         error_levels: 0,
+        nested: false,
         ..params.clone()
     };
-    let wide = solve(problem, &params, None)?;
+    let wide = solve_with(problem, (&params, None), start, Some(&mut *observe))?;
     let mut chain = Chain {
         solutions: vec![wide],
         surrounds: Vec::new(),
@@ -116,19 +152,112 @@ pub fn solve_chain(problem: &Problem, params: &Params) -> Result<Chain, SolveErr
             &inner,
             (fine.hx, fine.hy),
         ));
-        let nested = solve_nested(
+        // The rectangle starts on its own level from the surroundings' pressure and film
+        // constant (from the coarsest grid, the light members at S 0.1 % of Fig. 6 diverged);
+        // where that fails, cold from the same.
+        let start = Start {
+            grid: fine,
+            level: params.level,
+            p: fine.sample(|x, y| surround.pressure(x, y)),
+            delta: outer.delta,
+            method: outer.info.method,
+            coarser: Vec::new(),
+            residual: outer.info.residual(),
+        };
+        let nested = solve_with(
             problem,
-            &Params {
-                domain: inner,
-                ..params.clone()
-            },
-            &surround,
-            None,
+            (
+                &Params {
+                    domain: inner,
+                    ..params.clone()
+                },
+                Some(&surround),
+            ),
+            Some(&start),
+            Some(&mut *observe),
         )?;
         chain.surrounds.push(surround);
         chain.solutions.push(nested);
     }
     Ok(chain)
+}
+
+/// The solve of a case whose parameters ask for nested domains ([`Params::nested`]): its
+/// chain at `params.level`, the case-sized domain from `start` where it fits, and the chains
+/// at the `params.error_levels` levels below for the error estimate (cold; a level that
+/// fails ends the estimate there). The solution is the innermost grid's, with the chain's
+/// friction, the whole time and the case-sized domain's solution as its surroundings (a
+/// related case's start).
+pub(super) fn solve_point(
+    problem: &Problem,
+    params: &Params,
+    start: Option<&Start>,
+    observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
+    let clock = Instant::now();
+    let mut observer = observer;
+    let mut observe = |p: &Progress| {
+        if let Some(o) = observer.as_mut() {
+            o(p)
+        }
+    };
+    // Where a rectangle does not converge (Fig. 6's lightest members at S 0.1 %: their
+    // Newton-Krylov finish on the rectangle stalls), the case is solved on its one
+    // case-sized domain, as without the chain, with that domain's own error estimate.
+    let chain = match chain_from(problem, params, start, &mut observe) {
+        Ok(chain) => chain,
+        Err(_) => {
+            let single = Params {
+                nested: false,
+                ..params.clone()
+            };
+            let mut s = solve_with(problem, (&single, None), start, Some(&mut observe))?;
+            s.info.seconds = clock.elapsed().as_secs_f64();
+            return Ok(s);
+        }
+    };
+    let top_seconds = clock.elapsed().as_secs_f64();
+    let mut levels = Vec::new();
+    let mut stopped = None;
+    for level in params.level.saturating_sub(params.error_levels)..params.level {
+        match solve_chain(
+            problem,
+            &Params {
+                level,
+                ..params.clone()
+            },
+        ) {
+            Ok(c) => levels.push(c.level_values(problem)),
+            Err(_) => {
+                levels.clear();
+                stopped = Some(LadderStop::NotConverged { level });
+            }
+        }
+    }
+    levels.push(chain.level_values(problem));
+    let errors = (params.error_levels > 0).then(|| OutputErrors {
+        levels,
+        seconds: clock.elapsed().as_secs_f64() - top_seconds,
+        stopped,
+    });
+    let friction = chain.friction(problem);
+    let mut solutions = chain.solutions;
+    let mut solution = solutions.pop().expect("a chain has its case-sized domain");
+    solution.friction = friction;
+    solution.errors = errors;
+    solution.info.seconds = clock.elapsed().as_secs_f64();
+    if solutions
+        .iter()
+        .any(|s| s.info.method == Method::NewtonKrylov)
+    {
+        solution.info.method = Method::NewtonKrylov;
+    }
+    if !solutions.is_empty() {
+        let wide = solutions.swap_remove(0);
+        solution.info.start = wide.info.start;
+        solution.surroundings = Some(Box::new(wide));
+    }
+    Ok(solution)
 }
 
 /// [`solve_chain`] at `params.level` and at the `levels` levels below it, and the error

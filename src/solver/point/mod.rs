@@ -55,7 +55,7 @@ pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-20";
+pub const SOLVER_REVISION: &str = "point-21";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -92,6 +92,9 @@ pub struct PointSolution {
     /// The coarser levels' solutions behind `errors`, finest first: a member's ladder starts
     /// from them ([`Start::coarser`]).
     pub coarser: Vec<CoarseSolution>,
+    /// The case-sized domain's solution around a chain of nested domains ([`chain`]), whose
+    /// innermost grid this is; a related case starts from it.
+    pub surroundings: Option<Box<PointSolution>>,
 }
 
 /// The level estimated to resolve the film of `problem` whose minimum film came out as
@@ -230,6 +233,9 @@ pub fn solve(
     params: &Params,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
+    if params.nested && !chain::rectangles(&params.domain).is_empty() {
+        return chain::solve_point(problem, params, None, observer);
+    }
     solve_with(problem, (params, None), None, observer)
 }
 
@@ -255,6 +261,9 @@ pub fn solve_from(
     start: &Start,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
+    if params.nested && !chain::rectangles(&params.domain).is_empty() {
+        return chain::solve_point(problem, params, Some(start), observer);
+    }
     solve_with(problem, (params, None), Some(start), observer)
 }
 
@@ -330,7 +339,7 @@ fn solve_with(
     let mut tried = Vec::new();
     let warm_run = warm_params
         .as_ref()
-        .and_then(|(s, p)| warm::converge(problem, p, s, &mut observe, &mut tried));
+        .and_then(|(s, p)| warm::converge(problem, (p, surround), s, &mut observe, &mut tried));
     let (params, mut mg, run) = match (warm_run, &warm_params) {
         (Some((mg, run)), Some((_, p))) => (p, mg, run),
         _ => {
@@ -473,6 +482,7 @@ fn solve_with(
         },
         errors,
         coarser,
+        surroundings: None,
     })
 }
 

@@ -168,9 +168,20 @@ impl Surround {
     /// The sliding `mu-bar` the wide solution adds outside the nested grid's interior cells,
     /// over the loaded film `H <= h_limit` (Eq. 8, over the applied load).
     pub fn outside_sliding(&self, problem: &Problem, h_limit: f64) -> f64 {
+        self.outside_friction(problem, h_limit, false).0
+    }
+
+    /// [`Surround::outside_sliding`] and, where `rolling`, the rolling part likewise (the
+    /// Poiseuille shear on the surface, central differences, as the solver's own).
+    pub fn outside_friction(
+        &self,
+        problem: &Problem,
+        h_limit: f64,
+        rolling: bool,
+    ) -> (f64, Option<f64>) {
         let n_s = problem.eyring_n_s();
         let g = &self.wide;
-        let mut sum = 0.0;
+        let (mut sliding, mut poiseuille) = (0.0, 0.0);
         for j in 1..g.ny {
             for i in 1..g.nx {
                 let k = g.idx(i, j);
@@ -178,13 +189,17 @@ impl Surround {
                 if p <= 0.0 || h > h_limit || self.cover_share[k] == 0.0 {
                     continue;
                 }
-                sum += self.cover_share[k]
+                sliding += self.cover_share[k]
                     * problem
                         .shear
                         .mean_shear_stress(n_s * problem.viscosity.eta_bar(p) / h, p);
+                poiseuille +=
+                    self.cover_share[k] * h * (self.p[k + 1] - self.p[k - 1]) / (2.0 * g.hx);
             }
         }
-        sum * g.hx * g.hy / LOAD
+        let area = g.hx * g.hy / LOAD;
+        let scale = problem.groups.rolling_stress_scale();
+        (sliding * area, rolling.then_some(scale * poiseuille * area))
     }
 }
 

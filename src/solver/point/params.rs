@@ -132,6 +132,12 @@ pub struct Params {
     /// the numerics solve their levels themselves); a case is solved with 2, the three levels
     /// an observed order needs ([`Params::for_problem`]).
     pub error_levels: u32,
+    /// Solve on a chain of nested domains inside `domain` ([`super::chain`]): the case-sized
+    /// domain, then rectangles each a third of the one around it down to the contact's core,
+    /// every one at `level`. Default false; the rule sets it where the domain has rectangles
+    /// ([`Params::for_problem`]); a domain without any (an expert's `--domain`, Fig. 6's
+    /// paper setup) is solved alone.
+    pub nested: bool,
 }
 
 impl Default for Params {
@@ -165,6 +171,7 @@ impl Default for Params {
             require_positive_film: true,
             film_refinement_levels: 1,
             error_levels: 0,
+            nested: false,
         }
     }
 }
@@ -185,7 +192,10 @@ impl Params {
     /// problem calls for ([`Domain::for_problem`]), with the flooded inlet's far field on its
     /// edge ([`Edge::FarField`]) and the friction of the loaded film
     /// ([`FrictionRegion::LoadedFilm`]), so that neither the film nor the friction depends on
-    /// where the domain ends (`docs/DOMAIN_NOTES.md`). The far field's amplitude is the
+    /// where the domain ends (`docs/DOMAIN_NOTES.md`), and on a chain of nested domains where
+    /// the case-sized domain reaches far beyond the contact ([`Params::nested`]: the light
+    /// contacts, whose uniform grid is 3-5 times coarser in the contact than the paper's).
+    /// The far field's amplitude is the
     /// a-priori one: the domain keeps the load outside below 8 %, where fitting it moved
     /// film and friction by 0.05 % or less at level 7 on M 1, 5 and 50 and on Fig. 6 case 23;
     /// at M 20, L 30 by 0.4 % and 0.7 %, and there the a-priori edge is the better converged
@@ -194,12 +204,14 @@ impl Params {
     /// parameter (Table 4's film check at level 5, an expert's `--domain`) sets it on top of
     /// this.
     pub fn for_problem(problem: &Problem, level: u32) -> Self {
+        let domain = Domain::for_problem(problem);
         Params {
             level,
-            domain: Domain::for_problem(problem),
+            domain,
             edge: Edge::FarField,
             friction_region: FrictionRegion::LoadedFilm,
             error_levels: ERROR_LEVELS,
+            nested: !super::chain::rectangles(&domain).is_empty(),
             ..Params::default()
         }
     }

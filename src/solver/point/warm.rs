@@ -19,11 +19,13 @@
 
 use super::cycles::{converge_by_cycles, stop_outputs, StallWindows, State};
 use super::finish::{finish, polish_and_finish, Work};
+use super::nested::Surround;
 use super::stopping::{Known, WarmStop};
 use super::{hierarchy, Converged, Hierarchy, Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{Method, Progress, StartKind};
+use std::sync::Arc;
 
 /// A converged solution that a related case starts from: its finest grid and level, the
 /// pressure there, the film constant, how it converged and the residual it was accepted at.
@@ -47,8 +49,9 @@ pub struct Start {
 }
 
 impl Start {
-    /// The start a solution gives.
+    /// The start a solution gives: a chain's case-sized domain ([`super::chain`]).
     pub fn of(s: &super::PointSolution) -> Self {
+        let s = s.surroundings.as_deref().unwrap_or(s);
         Start {
             grid: s.grid,
             level: s.info.level,
@@ -88,12 +91,12 @@ pub(super) fn params_at(params: &Params, level: u32) -> Params {
 /// fails, its residuals appended to `tried`.
 pub(super) fn converge(
     problem: &Problem,
-    params: &Params,
+    (params, surround): (&Params, Option<&Arc<Surround>>),
     start: &Start,
     observe: &mut dyn FnMut(&Progress),
     tried: &mut Vec<f64>,
 ) -> Option<(Hierarchy, Converged)> {
-    let mut mg = hierarchy(problem, params, None, start.delta);
+    let mut mg = hierarchy(problem, params, surround, start.delta);
     mg.warm = true;
     let top = mg.levels.len() - 1;
     // The pressure first, then the edge: the far field is put on the boundary for the
