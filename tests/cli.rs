@@ -20,6 +20,28 @@ fn solve_json_has_every_documented_key() {
     assert!((v["m"].as_f64().unwrap() - 100.0).abs() < 1e-9);
 }
 
+/// A light contact whose case-sized domain reaches beyond three times the core is solved on
+/// nested domains, and `--json` says which (M 5, L 10: `-12.5..7 x 12.5`, innermost the core
+/// `-1.6..1.0 x 1.3` pushed out onto its surroundings' grid lines); a mid-range one is not.
+#[test]
+fn solve_json_names_the_nested_domains() {
+    let (code, out, err) = repro(&[
+        "solve", "--m", "5", "--l", "10", "--s-bar", "0.1", "--level", "4", "--json", "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    let at = |which: &str, key: &str| v["nested"][which][key].as_f64().unwrap();
+    assert_eq!(at("case_domain", "x_start"), -12.5);
+    assert!((-1.8..=-1.6).contains(&at("innermost", "x_start")));
+    assert!(at("innermost", "mesh") < at("case_domain", "mesh") / 5.0);
+    let (code, out, err) = repro(&[
+        "solve", "--m", "100", "--l", "5", "--s-bar", "0.1", "--level", "4", "--json", "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    assert!(v.get("nested").is_none());
+}
+
 #[test]
 fn physical_form_reports_the_worked_case_groups() {
     let (code, out, err) = repro(&args(

@@ -77,6 +77,9 @@ pub fn run(args: &SolveArgs) -> Result<bool> {
     if args.json {
         let mut v = point_report(&problem, &s).json();
         v["thermal"] = thermal::json_of(&heat);
+        if let Some(nested) = nested_json(&s) {
+            v["nested"] = nested;
+        }
         println!("{}", serde_json::to_string_pretty(&v)?);
     } else {
         print!("{}{line}", point_text(&problem, &s));
@@ -210,24 +213,40 @@ fn point_text(problem: &Problem, s: &PointSolution) -> String {
         + &limit
 }
 
+/// The innermost grid's and the case-sized domain's `(domain, mesh)` of a solve on nested
+/// domains (`None` on a single domain).
+fn nested_domains(s: &PointSolution) -> Option<[(repro::solver::grid::Domain, f64); 2]> {
+    let outer = s.surroundings.as_ref()?;
+    Some([
+        (s.grid.domain(), s.grid.hx),
+        (outer.grid.domain(), outer.grid.hx),
+    ])
+}
+
 /// The nested domains' line of a summary (empty on a single domain): the innermost grid's
 /// rectangle and mesh inside the case-sized domain's.
 fn nested_text(s: &PointSolution) -> String {
-    let Some(outer) = &s.surroundings else {
+    let Some([inner, outer]) = nested_domains(s) else {
         return String::new();
     };
-    let describe = |g: &repro::solver::grid::Grid| {
-        let d = g.domain();
+    let describe = |(d, h): (repro::solver::grid::Domain, f64)| {
         format!(
             "X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4})",
-            d.x_start, d.x_end, d.y_half, g.hx
+            d.x_start, d.x_end, d.y_half, h
         )
     };
     format!(
         "nested      {} inside {}\n",
-        describe(&s.grid),
-        describe(&outer.grid)
+        describe(inner),
+        describe(outer)
     )
+}
+
+/// The same for `--json`: `{"innermost": {...}, "case_domain": {...}}`.
+fn nested_json(s: &PointSolution) -> Option<serde_json::Value> {
+    let [inner, outer] = nested_domains(s)?;
+    let describe = |(d, h): (repro::solver::grid::Domain, f64)| json!({"x_start": d.x_start, "x_end": d.x_end, "y_half": d.y_half, "mesh": h});
+    Some(json!({"innermost": describe(inner), "case_domain": describe(outer)}))
 }
 
 /// `repro solve --line`: the line contact (Fig. 7) from the same flags.
