@@ -7,6 +7,7 @@ mod common;
 
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
+use repro::solver::output::Output;
 use repro::solver::point::chain::{rectangles, solve_chain_estimated};
 use repro::solver::point::Params;
 use std::time::Instant;
@@ -21,11 +22,17 @@ fn main() {
         println!("  rectangle {r:?}");
     }
     let t = Instant::now();
-    let (chain, estimates) = solve_chain_estimated(&problem, &params, 2).expect("chain");
+    let (chain, errors) = solve_chain_estimated(&problem, &params, 2).expect("chain");
     let seconds = t.elapsed().as_secs_f64();
-    let outputs = chain.outputs(&problem);
-    for ((name, value), e) in ["Hc", "Hmin", "mu"].iter().zip(outputs).zip(estimates) {
-        match e {
+    let finest = errors.levels.last().expect("the chain's own level");
+    for (name, output) in [
+        ("Hc", Output::HCentral),
+        ("Hmin", Output::HMin),
+        ("mu", Output::MuBarSliding),
+    ] {
+        // The estimate is in the solver's units (`H = h/c`): relative, as in Moes units.
+        let value = finest.get(output);
+        match errors.estimate(output) {
             Some(e) => println!(
                 "{name} {value:.6}: error {:.3} % (order {:?}), extrapolated {:.6}",
                 100.0 * e.error / value.abs(),
@@ -35,6 +42,8 @@ fn main() {
             None => println!("{name} {value:.6}: no estimate"),
         }
     }
+    let [hc, hmin, mu] = chain.outputs(&problem);
+    println!("Moes Hc {hc:.6}, Moes Hmin {hmin:.6}, mu-bar {mu:.6}");
     println!(
         "level {level}, {} grids, {seconds:.1} s with the estimate",
         chain.solutions.len()

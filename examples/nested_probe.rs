@@ -14,6 +14,7 @@ use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::grid::{Domain, Grid};
 use repro::solver::output::Output;
+use repro::solver::point::chain::snap;
 use repro::solver::point::nested::Surround;
 use repro::solver::point::{self, Params, LOADED_FILM_FACTOR};
 use std::sync::Arc;
@@ -25,6 +26,8 @@ fn main() {
     let (wl, il): (u32, u32) = (a[2].parse().unwrap(), a[3].parse().unwrap());
     let mut wide_params = Params::for_problem(&problem, wl);
     wide_params.error_levels = 0;
+    // The whole domain alone: the rectangles are this probe's own.
+    wide_params.nested = false;
     let t = Instant::now();
     let wide = point::solve(&problem, &wide_params, None).expect("wide solve");
     let wide_s = t.elapsed().as_secs_f64();
@@ -46,15 +49,14 @@ fn main() {
     for rect in &a[4..] {
         let r: Vec<f64> = rect.split(':').map(|s| s.parse().unwrap()).collect();
         let g = outer.grid;
-        let snap = |v: f64, o: f64, h: f64, up: bool| {
-            let s = (v - o) / h;
-            o + h * if up { s.ceil() } else { s.floor() }
-        };
-        let inner = Domain {
-            x_start: snap(r[0], g.x0, g.hx, false),
-            x_end: snap(r[1], g.x0, g.hx, true),
-            y_half: -snap(-r[2], g.y0, g.hy, false),
-        };
+        let inner = snap(
+            &Domain {
+                x_start: r[0],
+                x_end: r[1],
+                y_half: r[2],
+            },
+            &g,
+        );
         let fine = Grid::level(&inner, il);
         let surround = Arc::new(Surround::new(
             &problem,

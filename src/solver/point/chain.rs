@@ -12,7 +12,6 @@ use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{
     Friction, LadderStop, LevelValues, Method, OutputErrors, Progress, SolveError,
 };
-use crate::solver::richardson::{estimate, ErrorEstimate};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -51,7 +50,7 @@ pub fn rectangles(domain: &Domain) -> Vec<Domain> {
 }
 
 /// `rect` pushed outward onto the grid lines of `grid`.
-fn snap(rect: &Domain, grid: &Grid) -> Domain {
+pub fn snap(rect: &Domain, grid: &Grid) -> Domain {
     let down = |v: f64, o: f64, h: f64| o + h * ((v - o) / h).floor();
     let up = |v: f64, o: f64, h: f64| o + h * ((v - o) / h).ceil();
     Domain {
@@ -120,14 +119,21 @@ impl Chain {
 /// Solves `problem`'s chain at `params.level` on `params.domain` (the case-sized domain with
 /// its far field, [`Params::for_problem`]); no error estimate of its own.
 pub fn solve_chain(problem: &Problem, params: &Params) -> Result<Chain, SolveError> {
-    chain_from(problem, params, None, &mut |_| {})
+    chain_from(
+        problem,
+        params,
+        &rectangles(&params.domain),
+        None,
+        &mut |_| {},
+    )
 }
 
-/// [`solve_chain`], the case-sized domain from `start` where given (a related case's
-/// surroundings, [`Start`]), every solve heard by `observe`.
+/// The chain of `rects` inside `params.domain`, the case-sized domain from `start` where
+/// given (a related case's surroundings, [`Start`]), every solve heard by `observe`.
 fn chain_from(
     problem: &Problem,
     params: &Params,
+    rects: &[Domain],
     start: Option<&Start>,
     observe: &mut dyn FnMut(&Progress),
 ) -> Result<Chain, SolveError> {
@@ -141,9 +147,9 @@ fn chain_from(
         solutions: vec![wide],
         surrounds: Vec::new(),
     };
-    for rect in rectangles(&params.domain) {
+    for rect in rects {
         let outer = chain.innermost();
-        let inner = snap(&rect, &outer.grid);
+        let inner = snap(rect, &outer.grid);
         let fine = Grid::level(&inner, params.level);
         let surround = Arc::new(Surround::new(
             problem,
@@ -204,7 +210,8 @@ pub(super) fn solve_point(
     // Where a rectangle does not converge (Fig. 6's lightest members at S 0.1 %: their
     // Newton-Krylov finish on the rectangle stalls), the case is solved on its one
     // case-sized domain, as without the chain, with that domain's own error estimate.
-    let chain = match chain_from(problem, params, start, &mut observe) {
+    let rects = rectangles(&params.domain);
+    let chain = match chain_from(problem, params, &rects, start, &mut observe) {
         Ok(chain) => chain,
         Err(_) => {
             let single = Params {
@@ -216,30 +223,8 @@ pub(super) fn solve_point(
             return Ok(s);
         }
     };
-    let top_seconds = clock.elapsed().as_secs_f64();
-    let mut levels = Vec::new();
-    let mut stopped = None;
-    for level in params.level.saturating_sub(params.error_levels)..params.level {
-        match solve_chain(
-            problem,
-            &Params {
-                level,
-                ..params.clone()
-            },
-        ) {
-            Ok(c) => levels.push(c.level_values(problem)),
-            Err(_) => {
-                levels.clear();
-                stopped = Some(LadderStop::NotConverged { level });
-            }
-        }
-    }
-    levels.push(chain.level_values(problem));
-    let errors = (params.error_levels > 0).then(|| OutputErrors {
-        levels,
-        seconds: clock.elapsed().as_secs_f64() - top_seconds,
-        stopped,
-    });
+    let errors = (params.error_levels > 0)
+        .then(|| chain_errors(problem, params, &chain, params.error_levels));
     let friction = chain.friction(problem);
     let mut solutions = chain.solutions;
     let mut solution = solutions.pop().expect("a chain has its case-sized domain");
@@ -260,26 +245,46 @@ pub(super) fn solve_point(
     Ok(solution)
 }
 
-/// [`solve_chain`] at `params.level` and at the `levels` levels below it, and the error
-/// estimate of each output of [`Chain::outputs`] over them (`None` where the estimate has
-/// too few levels).
+/// The discretisation error of `chain` (at `params.level`): the chains at the `levels`
+/// levels below, each solved cold on its own, and its own values. A level that fails ends
+/// the estimate there ([`LadderStop::NotConverged`]).
+fn chain_errors(problem: &Problem, params: &Params, chain: &Chain, levels: u32) -> OutputErrors {
+    let clock = Instant::now();
+    let mut values = Vec::new();
+    let mut stopped = None;
+    for level in params.level.saturating_sub(levels)..params.level {
+        match solve_chain(
+            problem,
+            &Params {
+                level,
+                ..params.clone()
+            },
+        ) {
+            Ok(c) => values.push(c.level_values(problem)),
+            Err(_) => {
+                values.clear();
+                stopped = Some(LadderStop::NotConverged { level });
+            }
+        }
+    }
+    values.push(chain.level_values(problem));
+    OutputErrors {
+        levels: values,
+        seconds: clock.elapsed().as_secs_f64(),
+        stopped,
+    }
+}
+
+/// [`solve_chain`] at `params.level` and its error estimate over the chains at the `levels`
+/// levels below it ([`OutputErrors::estimate`], in the solver's units).
 pub fn solve_chain_estimated(
     problem: &Problem,
     params: &Params,
     levels: u32,
-) -> Result<(Chain, [Option<ErrorEstimate>; 3]), SolveError> {
-    let mut values: Vec<[f64; 3]> = Vec::new();
-    for level in params.level.saturating_sub(levels)..params.level {
-        let coarse = Params {
-            level,
-            ..params.clone()
-        };
-        values.push(solve_chain(problem, &coarse)?.outputs(problem));
-    }
+) -> Result<(Chain, OutputErrors), SolveError> {
     let chain = solve_chain(problem, params)?;
-    values.push(chain.outputs(problem));
-    let of = |k: usize| estimate(&values.iter().map(|v| v[k]).collect::<Vec<_>>());
-    Ok((chain, [of(0), of(1), of(2)]))
+    let errors = chain_errors(problem, params, &chain, levels);
+    Ok((chain, errors))
 }
 
 #[cfg(test)]

@@ -233,22 +233,7 @@ pub fn solve(
     params: &Params,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    if params.nested && !chain::rectangles(&params.domain).is_empty() {
-        return chain::solve_point(problem, params, None, observer);
-    }
-    solve_with(problem, (params, None), None, observer)
-}
-
-/// Solves `problem` with `params` on a nested domain (`params.domain`, its edges on grid lines
-/// of the solution around it) inside `surround` ([`nested`]; a prototype of issue 39), cold
-/// from the surroundings' pressure.
-pub fn solve_nested(
-    problem: &Problem,
-    params: &Params,
-    surround: &Arc<Surround>,
-    observer: Option<&mut dyn FnMut(&Progress)>,
-) -> Result<PointSolution, SolveError> {
-    solve_with(problem, (params, Some(surround)), None, observer)
+    solve_any(problem, params, None, observer)
 }
 
 /// Solves `problem` with `params` from `start`, the converged solution of a related case (its
@@ -261,10 +246,34 @@ pub fn solve_from(
     start: &Start,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
+    solve_any(problem, params, Some(start), observer)
+}
+
+/// Solves `problem` with `params` on a nested domain (`params.domain`, its edges on grid lines
+/// of the solution around it, [`chain::snap`]) inside `surround` ([`nested`]), cold from the
+/// surroundings' pressure: the prototypes' probe (`examples/nested_probe.rs`), which nests
+/// at levels of its own.
+pub fn solve_nested(
+    problem: &Problem,
+    params: &Params,
+    surround: &Arc<Surround>,
+    observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
+    solve_with(problem, (params, Some(surround)), None, observer)
+}
+
+/// [`solve`] and [`solve_from`]: on the chain of nested domains where the parameters ask
+/// for it and the domain has rectangles ([`Params::nested`]), else on the one domain.
+fn solve_any(
+    problem: &Problem,
+    params: &Params,
+    start: Option<&Start>,
+    observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
     if params.nested && !chain::rectangles(&params.domain).is_empty() {
-        return chain::solve_point(problem, params, Some(start), observer);
+        return chain::solve_point(problem, params, start, observer);
     }
-    solve_with(problem, (params, None), Some(start), observer)
+    solve_with(problem, (params, None), start, observer)
 }
 
 /// What converged the top level: its cycles, history, method and Newton work.
