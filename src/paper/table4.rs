@@ -87,10 +87,12 @@ impl Table4Level {
 /// Solver parameters for a Table 4 level: the rule's ([`Params::for_problem`]; at the
 /// Appendix case's M = 1738 the paper's domain), except that at level 5 a non-positive
 /// minimum film is reported rather than refused (the paper's own level-5 film is six times
-/// too thin: 64 x 64 points do not resolve this load).
+/// too thin: 64 x 64 points do not resolve this load), and that a row is its level: no finer
+/// level for the accuracy target.
 pub fn params(problem: &Problem, level: u32) -> Params {
     Params {
         require_positive_film: level > 5,
+        accuracy: None,
         ..Params::for_problem(problem, level)
     }
 }

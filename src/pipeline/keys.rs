@@ -25,19 +25,26 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
         params.level,
         (d.x_start, d.x_end, d.y_half),
         params.rolling_friction,
-        (params.require_positive_film, params.film_refinement_levels),
+        (params.require_positive_film, params.refinement_levels),
         SOLVER_REVISION,
         (THERMAL_REVISION, TARGET_INPUTS),
         base_key,
     );
     // The edge and the friction's region, where they are not the rule's (the paper's setup
-    // beside Fig. 6): the rule's keys stay as they were.
-    if params.edge == Edge::FarField && params.friction_region == FrictionRegion::LoadedFilm {
-        key_of(&key)
-    } else {
-        let setup = format!("{:?} {:?}", params.edge, params.friction_region);
-        key_of(&(key, setup))
+    // beside Fig. 6), and an accuracy target, where one is set: the rule's keys stay as they
+    // were.
+    let rule =
+        params.edge == Edge::FarField && params.friction_region == FrictionRegion::LoadedFilm;
+    match (rule, params.accuracy) {
+        (true, None) => key_of(&key),
+        (false, None) => key_of(&(key, setup(params))),
+        (_, Some(target)) => key_of(&(key, setup(params), target)),
     }
+}
+
+/// The edge and friction region of `params`, as a key part.
+fn setup(params: &Params) -> String {
+    format!("{:?} {:?}", params.edge, params.friction_region)
 }
 
 /// The cache key of a line contact at the given solver parameters (the parameters a target

@@ -146,7 +146,7 @@ impl AccuracyCase {
 /// left out, rather than a finer level's time and error being shown under its name).
 pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
     point::Params {
-        film_refinement_levels: 0,
+        refinement_levels: 0,
         ..point::Params::for_problem(problem, level)
     }
 }

@@ -25,6 +25,7 @@ mod multigrid;
 pub mod nested;
 mod newton;
 mod params;
+mod refine;
 mod relax;
 mod stopping;
 mod transfer;
@@ -48,6 +49,7 @@ pub(crate) use level::LOAD;
 use multigrid::Hierarchy;
 use nested::Surround;
 pub use params::{Edge, Params};
+pub use refine::AccuracyTarget;
 use std::sync::Arc;
 use std::time::Instant;
 use stopping::Known;
@@ -374,13 +376,18 @@ fn solve_with(
     // Each level, once converged, has its edge settled ([`settle_edge`]). A film that closes
     // somewhere (the side lobes of the most heavily loaded contacts, M above ~5000, where the
     // film is a thousandth of the Hertzian approach and the grid's error in the deformation
-    // at the contact edge exceeds it) then asks for a finer grid: the converged solution
-    // interpolated up, cycled there (where the cycles converged the level below), and
-    // finished by Newton-Krylov from the better of the interpolated start and the cycles'
-    // best state where they do not converge. (Newton-Krylov alone takes 7 steps of 4-5 s
-    // each at level 8 on these cases; the cycles converge in about 20 of 0.2 s.)
+    // at the contact edge exceeds it), or outputs whose estimated discretisation error misses
+    // the accuracy target ([`Params::accuracy`]), then ask for a finer grid ([`refine`]),
+    // within [`Params::refinement_levels`]. The refined level's ladder starts from the
+    // levels below as they converged.
     let mut refinements = 0;
-    loop {
+    let mut warm_coarser: Vec<CoarseSolution> = match (start_kind, warm_start) {
+        // The coarser levels start from the base's where the member started from it, else
+        // from the full-multigrid states of the cold solve.
+        (StartKind::Warm, Some(s)) => s.coarser.clone(),
+        _ => run_coarser,
+    };
+    let (film, friction, errors, coarser) = loop {
         settle_top(
             &mut mg,
             params,
@@ -388,88 +395,79 @@ fn solve_with(
             (&mut cycles, &mut history, &mut work),
             &mut observe,
         )?;
+        let may_refine =
+            refinements < params.refinement_levels && level_number(mg.finest()) < MAX_LEVEL;
         let closed = friction::film(mg.finest(), g.moes_film_scale).h_min <= 0.0;
-        if !(params.require_positive_film
-            && closed
-            && refinements < params.film_refinement_levels
-            && params.level + refinements < MAX_LEVEL)
-        {
-            break;
+        if !(params.require_positive_film && closed && may_refine) {
+            let fine = mg.finest();
+            let film = friction::film(fine, g.moes_film_scale);
+            if params.require_positive_film && film.h_min <= 0.0 {
+                let level = level_number(fine);
+                return Err(SolveError::FilmCollapse {
+                    h_min: film.h_min,
+                    level,
+                    level_needed: Some(level_to_resolve(problem, level, film.h_min)),
+                    finest_level: MAX_LEVEL,
+                    cycle: cycles,
+                    residual_history: history,
+                });
+            }
+            let friction =
+                friction::friction(fine, &mg.model, mg.rolling_scale, params.friction_region);
+            if !friction.sliding.is_finite() || !friction.total().is_finite() {
+                return Err(SolveError::NonFinite {
+                    what: "friction",
+                    cycle: cycles,
+                    residual_history: history,
+                });
+            }
+            // The ladder converges its levels the way the top one finally converged.
+            let used = if newton_used {
+                Method::NewtonKrylov
+            } else {
+                method
+            };
+            let (errors, coarser) = if params.error_levels > 0 {
+                let (e, c) =
+                    ladder::output_errors(&mut mg, params, used, &warm_coarser, &mut observe);
+                (Some(e), c)
+            } else {
+                (None, Vec::new())
+            };
+            // Only a level its cycles converged: a refined level's Newton-Krylov finish costs
+            // 4-5 s a step at level 8 and converges linearly there (docs/SOLVER.md).
+            let missed = match (&params.accuracy, &errors) {
+                (Some(target), Some(e)) => method == Method::Cycles && !target.met_by(e, g.m),
+                _ => false,
+            };
+            if !(missed && may_refine) {
+                break (film, friction, errors, coarser);
+            }
+            // The refined level's ladder starts from this level and the ones below it.
+            let top = mg.levels.len() - 1;
+            let finest = CoarseSolution {
+                level: level_number(&mg.levels[top]),
+                p: mg.levels[top].p.clone(),
+                delta: mg.h0,
+                residual: Some(mg.residual_norm(top).0),
+            };
+            warm_coarser = std::iter::once(finest).chain(coarser).collect();
         }
         refinements += 1;
-        let k = mg.add_finer_level(&params.domain);
-        mg.make_top(k);
-        mg.interpolate(k);
-        if method == Method::Cycles {
-            let start = State::of(&mg, k);
-            let (start_residual, _) = mg.residual_norm(k);
-            // A refined level starts from a converged solution: no early rule there (its
-            // cycles may start slowly, and Newton-Krylov costs 4 s a step at level 8).
-            let windows = StallWindows {
-                stall: params.stall_cycles,
-                early: 0,
-            };
-            let run =
-                converge_by_cycles(&mut mg, k, params, windows, &Known::default(), &mut observe);
-            cycles += run.history.len();
-            history.extend(&run.history);
-            if run.converged {
-                continue;
-            }
-            if run.best_residual < start_residual {
-                run.best.restore(&mut mg, k);
-            } else {
-                start.restore(&mut mg, k);
-            }
-        }
-        method = Method::NewtonKrylov;
-        if !work.add(&finish(&mut mg, k, params, &mut observe, &mut history)) {
-            return Err(SolveError::NotConverged {
-                cycles,
-                tolerance: params.tolerance,
-                residual_history: history,
-            });
-        }
-    }
+        let tally = refine::Tally {
+            cycles: &mut cycles,
+            history: &mut history,
+            work: &mut work,
+        };
+        method = refine::refine(&mut mg, params, method, tally, &mut observe)?;
+    };
     if newton_used {
         method = Method::NewtonKrylov;
     }
     let fine = mg.finest();
     let load_error = (fine.load_defect() / LOAD).abs();
-    let film = friction::film(fine, g.moes_film_scale);
-    if params.require_positive_film && film.h_min <= 0.0 {
-        let level = level_number(fine);
-        return Err(SolveError::FilmCollapse {
-            h_min: film.h_min,
-            level,
-            level_needed: Some(level_to_resolve(problem, level, film.h_min)),
-            finest_level: MAX_LEVEL,
-            cycle: cycles,
-            residual_history: history,
-        });
-    }
-    let friction = friction::friction(fine, &mg.model, mg.rolling_scale, params.friction_region);
-    if !friction.sliding.is_finite() || !friction.total().is_finite() {
-        return Err(SolveError::NonFinite {
-            what: "friction",
-            cycle: cycles,
-            residual_history: history,
-        });
-    }
     let (grid, p, h, delta) = (fine.grid, fine.p.clone(), fine.h.clone(), mg.h0);
     let level = level_number(fine);
-    // The coarser levels start from the base's where the member started from it, else from
-    // the full-multigrid states of the cold solve.
-    let warm_coarser = match (start_kind, warm_start) {
-        (StartKind::Warm, Some(s)) => &s.coarser[..],
-        _ => &run_coarser[..],
-    };
-    let (errors, coarser) = if params.error_levels > 0 {
-        let (e, c) = ladder::output_errors(&mut mg, params, method, warm_coarser, &mut observe);
-        (Some(e), c)
-    } else {
-        (None, Vec::new())
-    };
     Ok(PointSolution {
         grid,
         p,

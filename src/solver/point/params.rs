@@ -123,10 +123,18 @@ pub struct Params {
     /// paper itself reports a film an order of magnitude too thin.
     pub require_positive_film: bool,
     /// Finer levels the solver may add, one at a time, while the converged film is not
-    /// positive: friction is never computed on a closed gap. Default 1: level 8 opens the
-    /// film of the heaviest Table 2 loads that close at level 7 (M up to ~11 000). The
-    /// level solved on is reported in [`Info::level`].
-    pub film_refinement_levels: u32,
+    /// positive (friction is never computed on a closed gap) or the outputs' estimated error
+    /// misses [`Params::accuracy`]. Default 1: level 8 opens the film of the heaviest Table 2
+    /// loads that close at level 7 (M up to ~11 000). The level solved on is reported in
+    /// [`Info::level`].
+    pub refinement_levels: u32,
+    /// The estimated discretisation errors the solve refines its grid to meet, within
+    /// [`Params::refinement_levels`] ([`super::AccuracyTarget`]; needs [`Params::error_levels`]).
+    /// Default none, in the rule too: 1 % in friction ([`super::AccuracyTarget::FRICTION`]) takes
+    /// about a third of the paper's cases to level 8 and its cold run to about four times its
+    /// cost (docs/ACCURACY_NOTES.md, "Refinement to a target"); an expert sets it on top of
+    /// the rule.
+    pub accuracy: Option<super::AccuracyTarget>,
     /// Coarser levels solved on their own after the finest, for the outputs' discretisation
     /// error ([`crate::solver::richardson`], the `ladder` module); 0 for none. Default 0 (studies of
     /// the numerics solve their levels themselves); a case is solved with 2, the three levels
@@ -169,7 +177,8 @@ impl Default for Params {
             friction_region: FrictionRegion::Domain,
             rolling_friction: true,
             require_positive_film: true,
-            film_refinement_levels: 1,
+            refinement_levels: 1,
+            accuracy: None,
             error_levels: 0,
             nested: false,
         }

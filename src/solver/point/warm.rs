@@ -80,8 +80,8 @@ pub(super) fn params_at(params: &Params, level: u32) -> Params {
     Params {
         level,
         coarsest_level: params.coarsest_level.min(level),
-        film_refinement_levels: params
-            .film_refinement_levels
+        refinement_levels: params
+            .refinement_levels
             .saturating_sub(level - params.level),
         ..params.clone()
     }

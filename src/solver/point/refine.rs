@@ -1,0 +1,164 @@
+//! A finer level added to a converged hierarchy: where the film closes (friction is never
+//! computed on a closed gap) and where the outputs' estimated discretisation error misses the
+//! accuracy target ([`AccuracyTarget`]). The converged solution is interpolated up, cycled
+//! there (where the cycles converged the level below), and finished by Newton-Krylov from the
+//! better of the interpolated start and the cycles' best state where they do not converge.
+//! (Newton-Krylov alone takes 7 steps of 4-5 s each at level 8 on the heaviest cases; the
+//! cycles converge in about 20 of 0.2 s.)
+
+use super::cycles::{converge_by_cycles, StallWindows, State};
+use super::finish::{finish, Work};
+use super::multigrid::Hierarchy;
+use super::stopping::Known;
+use super::Params;
+use crate::solver::output::{Method, Output, OutputErrors, Progress, SolveError};
+use serde::Serialize;
+
+/// The discretisation errors a case's solve refines its grid to meet, relative to each
+/// output's own value, within [`Params::refinement_levels`], where the level converged by its
+/// cycles: the sliding `mu-bar` the paper's curve is about, and optionally the central film.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct AccuracyTarget {
+    /// The sliding `mu-bar`'s largest estimated relative error.
+    pub mu_bar_sliding: f64,
+    /// The central film's, below [`AccuracyTarget::HEAVY_M`] and from it up (where the film
+    /// is a thousandth of the Hertzian approach); `None` for no film target.
+    pub h_central: Option<(f64, f64)>,
+}
+
+impl AccuracyTarget {
+    /// The Moes load from which the heavy contacts' film bound applies.
+    pub const HEAVY_M: f64 = 5000.0;
+
+    /// The rule's: 1 % in friction. The film is not a target: with issue 39's film bounds
+    /// (2 %, 5 % from M 5 000 up) as well, one level of refinement took 870 of the cold
+    /// paper's first 1 284 solves to level 8 and left 370 of them above the film bound
+    /// (the film converges at first order where the piezoviscous flank is not resolved,
+    /// docs/ACCURACY_NOTES.md), at more than four times the paper's cost.
+    pub const FRICTION: AccuracyTarget = AccuracyTarget {
+        mu_bar_sliding: 0.01,
+        h_central: None,
+    };
+
+    /// Issue 39's targets: 1 % in friction, 2 % in the central film (5 % from M 5 000 up).
+    pub const ISSUE_39: AccuracyTarget = AccuracyTarget {
+        mu_bar_sliding: 0.01,
+        h_central: Some((0.02, 0.05)),
+    };
+
+    /// Whether `errors` meet the target at Moes load `m`: every output estimated within its
+    /// bound (an output without an estimate misses it).
+    pub fn met_by(&self, errors: &OutputErrors, m: f64) -> bool {
+        let within = |output: Output, bound: f64| {
+            let value = errors.levels.last().map(|v| v.get(output));
+            match (errors.estimate(output), value) {
+                (Some(e), Some(v)) => e.relative(v) <= bound,
+                _ => false,
+            }
+        };
+        let film = match self.h_central {
+            None => true,
+            Some((light, heavy)) => within(
+                Output::HCentral,
+                if m >= Self::HEAVY_M { heavy } else { light },
+            ),
+        };
+        within(Output::MuBarSliding, self.mu_bar_sliding) && film
+    }
+}
+
+/// The running tallies of a solve: cycles, residuals, Newton-Krylov work.
+pub(super) struct Tally<'a> {
+    pub cycles: &'a mut usize,
+    pub history: &'a mut Vec<f64>,
+    pub work: &'a mut Work,
+}
+
+/// Adds a finer level to the converged `mg` and converges it (module documentation); returns
+/// how it converged.
+pub(super) fn refine(
+    mg: &mut Hierarchy,
+    params: &Params,
+    method: Method,
+    tally: Tally,
+    observe: &mut dyn FnMut(&Progress),
+) -> Result<Method, SolveError> {
+    let k = mg.add_finer_level(&params.domain);
+    mg.make_top(k);
+    mg.interpolate(k);
+    if method == Method::Cycles {
+        let start = State::of(mg, k);
+        let (start_residual, _) = mg.residual_norm(k);
+        // A refined level starts from a converged solution: no early rule there (its
+        // cycles may start slowly, and Newton-Krylov costs 4 s a step at level 8).
+        let windows = StallWindows {
+            stall: params.stall_cycles,
+            early: 0,
+        };
+        let run = converge_by_cycles(mg, k, params, windows, &Known::default(), observe);
+        *tally.cycles += run.history.len();
+        tally.history.extend(&run.history);
+        if run.converged {
+            return Ok(Method::Cycles);
+        }
+        if run.best_residual < start_residual {
+            run.best.restore(mg, k);
+        } else {
+            start.restore(mg, k);
+        }
+    }
+    if !tally
+        .work
+        .add(&finish(mg, k, params, observe, tally.history))
+    {
+        return Err(SolveError::NotConverged {
+            cycles: *tally.cycles,
+            tolerance: params.tolerance,
+            residual_history: tally.history.clone(),
+        });
+    }
+    Ok(Method::NewtonKrylov)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::output::LevelValues;
+
+    fn errors(hc: [f64; 3], mu: [f64; 3]) -> OutputErrors {
+        let levels = (0..3)
+            .map(|i| LevelValues {
+                level: 5 + i as u32,
+                h_central: hc[i],
+                h_min: hc[i] / 2.0,
+                mu_bar_sliding: mu[i],
+                mu_bar_total: mu[i],
+            })
+            .collect();
+        OutputErrors::of(levels, 0.0)
+    }
+
+    #[test]
+    fn the_target_reads_friction_and_central_film_at_their_bounds() {
+        let t = AccuracyTarget::ISSUE_39;
+        // Second order, halving errors 4e-3 / 1e-3 in friction: 1.25 * 1e-3 / 3 of 10.
+        let good = errors([1.0, 1.003, 1.00375], [9.96, 9.99, 9.9975]);
+        assert!(t.met_by(&good, 100.0));
+        assert!(AccuracyTarget::FRICTION.met_by(&good, 100.0));
+        // The film's error 2.5 % (order 0.47, untrusted: 3 x 0.0084 of 1.0): missed below
+        // M 5 000, met above it; 6 % (order 0.58: 3 x 0.02) missed there too.
+        let film = errors([0.98, 0.9916, 1.0], [9.96, 9.99, 9.9975]);
+        assert!(!t.met_by(&film, 100.0));
+        assert!(t.met_by(&film, 6000.0));
+        let heavy = errors([0.95, 0.98, 1.0], [9.96, 9.99, 9.9975]);
+        assert!(!t.met_by(&heavy, 6000.0));
+        // The friction target alone reads the friction alone; 2.4 % (first order, 3 x 0.08
+        // of 9.99) misses it.
+        assert!(AccuracyTarget::FRICTION.met_by(&heavy, 6000.0));
+        let friction = errors([1.0, 1.003, 1.00375], [9.8, 9.91, 9.99]);
+        assert!(!AccuracyTarget::FRICTION.met_by(&friction, 100.0));
+        // Without an estimate (one level read): missed.
+        let one = OutputErrors::of(good.levels[2..].to_vec(), 0.0);
+        assert!(!t.met_by(&one, 100.0));
+    }
+}
