@@ -130,10 +130,10 @@ pub struct Params {
     pub refinement_levels: u32,
     /// The estimated discretisation errors the solve refines its grid to meet, within
     /// [`Params::refinement_levels`] ([`super::AccuracyTarget`]; needs [`Params::error_levels`]).
-    /// Default none, in the rule too: 1 % in friction ([`super::AccuracyTarget::FRICTION`]) takes
-    /// about a third of the paper's cases to level 8 and its cold run to about four times its
-    /// cost (docs/ACCURACY_NOTES.md, "Refinement to a target"); an expert sets it on top of
-    /// the rule.
+    /// Default none, in the rule too: 1 % in friction ([`super::AccuracyTarget::FRICTION`])
+    /// takes about a third of the paper's cases to level 8, at 1.5 times its CPU time and 1.65
+    /// times its wall time (docs/ACCURACY_NOTES.md, "Refinement to a target"); an expert sets
+    /// it on top of the rule.
     pub accuracy: Option<super::AccuracyTarget>,
     /// Coarser levels solved on their own after the finest, for the outputs' discretisation
     /// error ([`crate::solver::richardson`], the `ladder` module); 0 for none. Default 0 (studies of

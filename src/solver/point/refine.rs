@@ -34,7 +34,8 @@ impl AccuracyTarget {
     /// (2 %, 5 % from M 5 000 up) as well, one level of refinement took 870 of the cold
     /// paper's first 1 284 solves to level 8 and left 370 of them above the film bound
     /// (the film converges at first order where the piezoviscous flank is not resolved,
-    /// docs/ACCURACY_NOTES.md), at more than four times the paper's cost.
+    /// docs/ACCURACY_NOTES.md), and the run was stopped unfinished after 2.4 times the
+    /// paper's whole wall time.
     pub const FRICTION: AccuracyTarget = AccuracyTarget {
         mu_bar_sliding: 0.01,
         h_central: None,
