@@ -1,0 +1,600 @@
+//! `import repro`: the solver, the predictor, lubricants and studies of the `repro` crate as a
+//! Python extension module (`repro._repro`; `repro/__init__.py` wraps it). Every function
+//! calls the library as the command line does (`repro solve` and this module share
+//! [`repro::report::solve::solve`]), so a result here has the bits of the command's.
+
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyReadonlyArray1};
+use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use repro::paper::prediction::contact::EngineeringContact;
+use repro::paper::prediction::Prediction;
+use repro::physics::case::{LubricantSpec, Physics};
+use repro::physics::density::DensityLaw;
+use repro::physics::lubricant::LubricantTable;
+use repro::physics::pressure_viscosity::BaseOil;
+use repro::physics::traction::Load;
+use repro::physics::viscosity::ViscosityLaw;
+use repro::pipeline::cache::Cache;
+use repro::pipeline::context::{check_writable, Context};
+use repro::pipeline::executor::RunProgress;
+use repro::pipeline::sweep::Sweep;
+use repro::report::solve::{
+    self, check_level, lubricant_spec, physics, DatasheetInputs, InputError, RheologyChoice,
+    SolveFailure, SolveInputs, Solved,
+};
+use repro::solver::grid::Domain;
+use repro::solver::output::{Progress, SolveError};
+use repro::solver::point;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Mutex;
+use std::time::Duration;
+
+/// The command line's message with its flags as this module's keywords
+/// (`--s-bar: required` -> `s_bar: required`).
+fn keywords(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(at) = rest.find("--") {
+        out.push_str(&rest[..at]);
+        let flag = &rest[at + 2..];
+        let end = flag
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+            .unwrap_or(flag.len());
+        out.push_str(&flag[..end].replace('-', "_"));
+        rest = &flag[end..];
+    }
+    out.push_str(rest);
+    out
+}
+
+fn value_error(e: InputError) -> PyErr {
+    PyValueError::new_err(keywords(&e.0))
+}
+
+/// A failed solve as `repro.SolveError` (defined in `repro/__init__.py`): the message, the
+/// failure's kind and the residual history.
+fn solve_error(py: Python<'_>, e: &SolveError) -> PyErr {
+    let kind = match e {
+        SolveError::NotConverged { .. } => "not_converged",
+        SolveError::NonFinite { .. } => "non_finite",
+        SolveError::FilmCollapse { .. } => "film_collapse",
+        SolveError::InvalidParams(_) => "invalid_params",
+        _ => "other",
+    };
+    let made = py.import("repro").and_then(|m| {
+        m.getattr("SolveError")?
+            .call1((e.to_string(), kind, e.residual_history().to_vec()))
+    });
+    match made {
+        Ok(v) => PyErr::from_value(v),
+        Err(err) => err,
+    }
+}
+
+/// One of `names`' values for the keyword `flag`, or the error that lists them.
+fn choice<T: Copy>(flag: &str, value: Option<&str>, names: &[(&str, T)]) -> PyResult<Option<T>> {
+    let Some(v) = value else { return Ok(None) };
+    let wanted = v.replace('_', "-");
+    names
+        .iter()
+        .find(|(n, _)| *n == wanted)
+        .map(|(_, t)| Some(*t))
+        .ok_or_else(|| {
+            let all: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
+            PyValueError::new_err(format!(
+                "{flag}: '{v}' is not one of {}",
+                all.join(", ")
+            ))
+        })
+}
+
+fn viscosity(v: Option<&str>) -> PyResult<Option<ViscosityLaw>> {
+    choice(
+        "viscosity",
+        v,
+        &[("barus", ViscosityLaw::Barus), ("roelands", ViscosityLaw::Roelands)],
+    )
+}
+
+fn density(v: Option<&str>) -> PyResult<Option<DensityLaw>> {
+    choice(
+        "density",
+        v,
+        &[
+            ("incompressible", DensityLaw::Incompressible),
+            ("dowson-higginson", DensityLaw::DowsonHigginson),
+        ],
+    )
+}
+
+fn base_oil(v: Option<&str>) -> PyResult<Option<BaseOil>> {
+    choice(
+        "base_oil",
+        v,
+        &[
+            ("mineral", BaseOil::Mineral),
+            ("pao", BaseOil::Polyalphaolefin),
+            ("pag", BaseOil::Polyglycol),
+        ],
+    )
+}
+
+/// The datasheet keywords.
+#[allow(clippy::too_many_arguments)]
+fn datasheet(
+    nu40: Option<f64>,
+    iso_vg: Option<u32>,
+    nu100: Option<f64>,
+    vi: Option<f64>,
+    rho15: Option<f64>,
+    expansion15: Option<f64>,
+    oil: Option<&str>,
+) -> PyResult<DatasheetInputs> {
+    Ok(DatasheetInputs {
+        nu40,
+        iso_vg,
+        nu100,
+        vi,
+        rho15,
+        expansion15,
+        base_oil: base_oil(oil)?,
+    })
+}
+
+/// Solves one contact as `repro solve` does; returns the CLI's JSON text, its summary and
+/// warning, and the fields (`X`, `Y`, `P`, `H`: 2-D `[j, i]` arrays for a point contact,
+/// 1-D `X`, `P`, `H` for a line contact).
+#[pyfunction]
+#[pyo3(signature = (*, m=None, l=None, s_bar=None, d=None, lubricant=None, temperature=None,
+    alpha=None, ph=None, um=None, tau0=None, rx=1.03875e-2, ry=None, e_prime=226e9,
+    nu40=None, iso_vg=None, nu100=None, vi=None, rho15=None, expansion15=None, base_oil=None,
+    slip=None, eta0=None, viscosity=None, density=None, rheology=None, lambda_lss=None,
+    tau_l0=None, line=false, level=None, domain=None, edge=None, max_cycles=None,
+    newton_steps=None, rolling=true, cold=false, k_solid=46.0, k_lubricant=0.13,
+    progress=None))]
+#[allow(clippy::too_many_arguments)]
+fn _solve<'py>(
+    py: Python<'py>,
+    m: Option<f64>,
+    l: Option<f64>,
+    s_bar: Option<f64>,
+    d: Option<f64>,
+    lubricant: Option<String>,
+    temperature: Option<f64>,
+    alpha: Option<f64>,
+    ph: Option<f64>,
+    um: Option<f64>,
+    tau0: Option<f64>,
+    rx: f64,
+    ry: Option<f64>,
+    e_prime: f64,
+    nu40: Option<f64>,
+    iso_vg: Option<u32>,
+    nu100: Option<f64>,
+    vi: Option<f64>,
+    rho15: Option<f64>,
+    expansion15: Option<f64>,
+    base_oil: Option<&str>,
+    slip: Option<f64>,
+    eta0: Option<f64>,
+    viscosity: Option<&str>,
+    density: Option<&str>,
+    rheology: Option<&str>,
+    lambda_lss: Option<f64>,
+    tau_l0: Option<f64>,
+    line: bool,
+    level: Option<u32>,
+    domain: Option<&str>,
+    edge: Option<&str>,
+    max_cycles: Option<usize>,
+    newton_steps: Option<usize>,
+    rolling: bool,
+    cold: bool,
+    k_solid: f64,
+    k_lubricant: f64,
+    progress: Option<PyObject>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let defaults = SolveInputs::default();
+    let inputs = SolveInputs {
+        m,
+        l,
+        s_bar,
+        d,
+        lubricant,
+        temperature,
+        alpha,
+        ph,
+        um,
+        tau0,
+        rx,
+        ry,
+        e_prime,
+        datasheet: datasheet(nu40, iso_vg, nu100, vi, rho15, expansion15, base_oil)?,
+        slip,
+        eta0,
+        viscosity: self::viscosity(viscosity)?,
+        density: self::density(density)?,
+        rheology: choice(
+            "rheology",
+            rheology,
+            &[
+                ("eyring", RheologyChoice::Eyring),
+                ("newtonian", RheologyChoice::Newtonian),
+                ("eyring-lss", RheologyChoice::EyringLss),
+            ],
+        )?,
+        lambda_lss,
+        tau_l0,
+        line,
+        level,
+        domain: choice(
+            "domain",
+            domain,
+            &[
+                ("auto", None),
+                ("paper", Some(Domain::default())),
+                ("wide", Some(Domain::wide())),
+                ("heavy", Some(Domain::heavy())),
+            ],
+        )?
+        .flatten(),
+        edge: choice(
+            "edge",
+            edge,
+            &[
+                ("auto", None),
+                ("zero", Some(point::Edge::Zero)),
+                ("far-field", Some(point::Edge::FarField)),
+            ],
+        )?
+        .flatten(),
+        max_cycles: max_cycles.unwrap_or(defaults.max_cycles),
+        newton_steps: newton_steps.unwrap_or(defaults.newton_steps),
+        rolling_friction: rolling,
+        cold,
+        k_solid,
+        k_lubricant,
+    };
+    // The solve runs without the GIL; a progress callback takes it back for each step.
+    let solved = py.allow_threads(|| {
+        let mut tell = |p: &Progress| {
+            if let Some(cb) = &progress {
+                Python::with_gil(|py| {
+                    let _ = cb.call1(py, (p.level, p.count, p.residual, p.h_central));
+                });
+            }
+        };
+        solve::solve(&inputs, &mut |_, _| {}, Some(&mut tell))
+    });
+    let solved = match solved {
+        Ok(s) => s,
+        Err(SolveFailure::Input(e)) => return Err(value_error(e)),
+        Err(SolveFailure::Solve(e)) => return Err(solve_error(py, &e)),
+        Err(e @ SolveFailure::Pipeline(_)) => return Err(PyValueError::new_err(e.to_string())),
+    };
+    let out = PyDict::new(py);
+    let json = serde_json::to_string_pretty(&solved.json())
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let (text, warning) = solved.text();
+    out.set_item("json", json)?;
+    out.set_item("text", text)?;
+    out.set_item("warning", warning)?;
+    match &solved {
+        Solved::Point(p) => {
+            let s = &p.solution;
+            let g = &s.grid;
+            let (nx, ny) = (g.px(), g.py());
+            let field = |f: &dyn Fn(usize, usize) -> f64| {
+                Array2::from_shape_fn((ny, nx), |(j, i)| f(i, j))
+            };
+            out.set_item("kind", "point")?;
+            out.set_item("X", field(&|i, _| g.x(i)).into_pyarray(py))?;
+            out.set_item("Y", field(&|_, j| g.y(j)).into_pyarray(py))?;
+            out.set_item("P", field(&|i, j| s.p[g.idx(i, j)]).into_pyarray(py))?;
+            out.set_item("H", field(&|i, j| s.h[g.idx(i, j)]).into_pyarray(py))?;
+            out.set_item("hx", g.hx)?;
+            out.set_item("hy", g.hy)?;
+        }
+        Solved::Line(l) => {
+            let s = &l.solution;
+            out.set_item("kind", "line")?;
+            out.set_item("X", s.x.clone().into_pyarray(py))?;
+            out.set_item("P", s.p.clone().into_pyarray(py))?;
+            out.set_item("H", s.h.clone().into_pyarray(py))?;
+        }
+    }
+    Ok(out)
+}
+
+/// The lubricant spec of the predictor's and `lubricant()`'s keywords at one temperature.
+#[allow(clippy::too_many_arguments)]
+fn spec(
+    lubricant: Option<&str>,
+    temperature: Option<f64>,
+    alpha: Option<f64>,
+    eta0: Option<f64>,
+    sheet: &DatasheetInputs,
+) -> PyResult<LubricantSpec> {
+    lubricant_spec(lubricant, temperature, alpha, eta0, sheet).map_err(value_error)
+}
+
+/// The element `i` of a broadcast input (length 1 or n).
+fn at(a: &[f64], i: usize) -> f64 {
+    if a.len() == 1 {
+        a[0]
+    } else {
+        a[i]
+    }
+}
+
+/// The predictor of `repro predict` (Eq. 12 -> Eq. 14, and the refined formula) over arrays
+/// of equal length `n` (or length 1, broadcast): `ph` (Pa) or `load` (N), `um`, `slip`,
+/// `tau0`, `temperature` (NaN: none). Returns a dict of arrays.
+#[pyfunction]
+#[pyo3(signature = (*, n, ph, load, um, slip, tau0, temperature, lubricant=None, alpha=None,
+    eta0=None, nu40=None, iso_vg=None, nu100=None, vi=None, rho15=None, expansion15=None,
+    base_oil=None, viscosity=None, rx=1.03875e-2, ry=None, e_prime=226e9))]
+#[allow(clippy::too_many_arguments)]
+fn _predict<'py>(
+    py: Python<'py>,
+    n: usize,
+    ph: Option<PyReadonlyArray1<'py, f64>>,
+    load: Option<PyReadonlyArray1<'py, f64>>,
+    um: PyReadonlyArray1<'py, f64>,
+    slip: PyReadonlyArray1<'py, f64>,
+    tau0: PyReadonlyArray1<'py, f64>,
+    temperature: Option<PyReadonlyArray1<'py, f64>>,
+    lubricant: Option<&str>,
+    alpha: Option<f64>,
+    eta0: Option<f64>,
+    nu40: Option<f64>,
+    iso_vg: Option<u32>,
+    nu100: Option<f64>,
+    vi: Option<f64>,
+    rho15: Option<f64>,
+    expansion15: Option<f64>,
+    base_oil: Option<&str>,
+    viscosity: Option<&str>,
+    rx: f64,
+    ry: Option<f64>,
+    e_prime: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let sheet = datasheet(nu40, iso_vg, nu100, vi, rho15, expansion15, base_oil)?;
+    let physics = physics(self::viscosity(viscosity)?, None, None, Physics::figs_4_to_7());
+    let (ph, load) = (
+        ph.as_ref().map(|a| a.as_slice()).transpose()?,
+        load.as_ref().map(|a| a.as_slice()).transpose()?,
+    );
+    let (um, slip, tau0) = (um.as_slice()?, slip.as_slice()?, tau0.as_slice()?);
+    let temperature = temperature.as_ref().map(|a| a.as_slice()).transpose()?;
+    let lubs = LubricantTable::table1();
+    let keys = [
+        "tau_c", "mu_bar", "mu", "mu_bar_refined", "mu_refined", "m", "l", "s_bar", "ph_pa",
+        "hc_m", "eta_bar_ph", "mu_bar_low", "mu_bar_high",
+    ];
+    let mut cols: Vec<Vec<f64>> = keys.iter().map(|_| Vec::with_capacity(n)).collect();
+    for i in 0..n {
+        let t = temperature.map(|t| at(t, i));
+        let lubricant = spec(lubricant, t, alpha, eta0, &sheet)?;
+        let load = match (ph, load) {
+            (Some(p), None) => Load::MaxPressure(at(p, i)),
+            (None, Some(f)) => Load::Force(at(f, i)),
+            (Some(_), Some(_)) => return Err(PyValueError::new_err("ph and load cannot be mixed")),
+            (None, None) => return Err(PyValueError::new_err("ph: required (or load)")),
+        };
+        let contact = EngineeringContact {
+            lubricant,
+            physics,
+            load,
+            rx_m: rx,
+            ry_m: ry.unwrap_or(rx),
+            e_prime_pa: e_prime,
+            um_m_s: at(um, i),
+            slip: at(slip, i),
+            tau0_pa: at(tau0, i),
+        };
+        let case = contact
+            .case(&lubs)
+            .map_err(|e| value_error(solve::flag_error(e)))?;
+        let p = Prediction::of(&case, &lubs).map_err(|e| value_error(solve::flag_error(e)))?;
+        let e = &p.central;
+        let c = &e.characteristic;
+        let band = p.mu_bar_band();
+        let row = [
+            c.tau_c,
+            e.mu_bar,
+            e.mu,
+            e.mu_bar_refined,
+            e.mu_refined,
+            c.m,
+            c.l,
+            c.s_bar,
+            c.ph_pa,
+            c.hc_m,
+            c.eta_bar_ph,
+            band.map_or(f64::NAN, |b| b.low),
+            band.map_or(f64::NAN, |b| b.high),
+        ];
+        for (col, v) in cols.iter_mut().zip(row) {
+            col.push(v);
+        }
+    }
+    let out = PyDict::new(py);
+    for (k, col) in keys.iter().zip(cols) {
+        out.set_item(*k, col.into_pyarray(py))?;
+    }
+    Ok(out)
+}
+
+/// A lubricant's eta0 and alpha at each temperature (Table 1, given, or a datasheet: then
+/// alpha's band when it is correlated; NaN otherwise).
+#[pyfunction]
+#[pyo3(signature = (*, temperature, lubricant=None, alpha=None, eta0=None, nu40=None,
+    iso_vg=None, nu100=None, vi=None, rho15=None, expansion15=None, base_oil=None))]
+#[allow(clippy::too_many_arguments)]
+fn _lubricant<'py>(
+    py: Python<'py>,
+    temperature: Option<PyReadonlyArray1<'py, f64>>,
+    lubricant: Option<&str>,
+    alpha: Option<f64>,
+    eta0: Option<f64>,
+    nu40: Option<f64>,
+    iso_vg: Option<u32>,
+    nu100: Option<f64>,
+    vi: Option<f64>,
+    rho15: Option<f64>,
+    expansion15: Option<f64>,
+    base_oil: Option<&str>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let sheet = datasheet(nu40, iso_vg, nu100, vi, rho15, expansion15, base_oil)?;
+    let temperature = temperature.as_ref().map(|a| a.as_slice()).transpose()?;
+    let n = temperature.map_or(1, |t| t.len());
+    let lubs = LubricantTable::table1();
+    let mut cols = [(); 4].map(|_| Vec::with_capacity(n));
+    for i in 0..n {
+        let t = temperature.map(|t| t[i]);
+        let s = spec(lubricant, t, alpha, eta0, &sheet)?;
+        let state = s
+            .resolve(&lubs)
+            .map_err(|e| value_error(solve::flag_error(e)))?;
+        let band = match &s {
+            LubricantSpec::Datasheet {
+                datasheet,
+                temperature_c,
+                alpha_per_gpa,
+            } => datasheet
+                .resolve()
+                .and_then(|d| d.at(*temperature_c, *alpha_per_gpa))
+                .map_err(|e| value_error(solve::flag_error(e.into())))?
+                .correlated
+                .map(|e| [e.low_per_pa, e.high_per_pa]),
+            _ => None,
+        };
+        let [low, high] = band.unwrap_or([f64::NAN; 2]);
+        for (col, v) in cols
+            .iter_mut()
+            .zip([state.eta0_pa_s, state.alpha_per_pa, low, high])
+        {
+            col.push(v);
+        }
+    }
+    let out = PyDict::new(py);
+    for (k, col) in ["eta0_pa_s", "alpha_per_pa", "alpha_low_per_pa", "alpha_high_per_pa"]
+        .iter()
+        .zip(cols)
+    {
+        out.set_item(*k, col.into_pyarray(py))?;
+    }
+    Ok(out)
+}
+
+/// A sweep (TOML text; `file` names it in errors) through the pipeline and cache of
+/// `repro run`, written to `out` as `<stem>.csv` and `<stem>.svg`. Returns the CSV's path,
+/// the cases and the cases solved. The run goes on in its own thread; this one calls
+/// `progress(done, total)` and checks for Ctrl-C between reports: on Ctrl-C the cases in
+/// flight finish (into the cache), no new case starts, and KeyboardInterrupt is raised.
+#[pyfunction]
+#[pyo3(signature = (*, text, file, stem, out, level=None, cache=None, progress=None))]
+#[allow(clippy::too_many_arguments)]
+fn _study(
+    py: Python<'_>,
+    text: &str,
+    file: &str,
+    stem: &str,
+    out: PathBuf,
+    level: Option<u32>,
+    cache: Option<PathBuf>,
+    progress: Option<PyObject>,
+) -> PyResult<(String, usize, Option<usize>)> {
+    let sweep = Sweep::parse(file, text).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    if let Some(l) = level {
+        check_level("--level", l).map_err(value_error)?;
+    }
+    check_writable(&out).map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
+    let stop = AtomicBool::new(false);
+    let latest: Mutex<Option<(usize, usize)>> = Mutex::new(None);
+    let done = AtomicBool::new(false);
+    let report = |_: &str, p: RunProgress| {
+        if let Ok(mut l) = latest.lock() {
+            *l = Some((p.done, p.total));
+        }
+        if stop.load(Ordering::SeqCst) {
+            // Unwinds out of the pool once the case that reports is in the cache: the
+            // other workers stop at their next report, and no new case starts.
+            std::panic::resume_unwind(Box::new("interrupted"));
+        }
+    };
+    let warn = |_: String| {};
+    let ctx = Context {
+        out: out.clone(),
+        cache: cache.as_ref().map(Cache::new),
+        level,
+        progress: &report,
+        warn: &warn,
+        stride: 1,
+        offline: false,
+    };
+    let mut told = None;
+    let mut interrupted = None;
+    let result = std::thread::scope(|scope| {
+        let run = scope.spawn(|| {
+            let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                repro::paper::figures::study(stem, &sweep, &ctx)
+            }));
+            done.store(true, Ordering::SeqCst);
+            r
+        });
+        while !done.load(Ordering::SeqCst) {
+            py.allow_threads(|| std::thread::sleep(Duration::from_millis(20)));
+            let now = latest.lock().ok().and_then(|l| *l);
+            if now != told {
+                told = now;
+                if let (Some(cb), Some((d, t))) = (&progress, now) {
+                    if let Err(e) = cb.call1(py, (d, t)) {
+                        interrupted.get_or_insert(e);
+                        stop.store(true, Ordering::SeqCst);
+                    }
+                }
+            }
+            if interrupted.is_none() {
+                if let Err(e) = py.check_signals() {
+                    interrupted = Some(e);
+                    stop.store(true, Ordering::SeqCst);
+                }
+            }
+        }
+        run.join()
+    });
+    if let Some(e) = interrupted {
+        return Err(e);
+    }
+    let built = match result {
+        Ok(Ok(r)) => r.map_err(|e| PyValueError::new_err(format!("{file}: {e}")))?,
+        _ => return Err(PyKeyboardInterrupt::new_err("study interrupted")),
+    };
+    let csv = out.join(format!("{stem}.csv"));
+    Ok((csv.display().to_string(), built.cases, built.solved))
+}
+
+/// A sweep given as JSON (a Python dict) as the TOML text a sweep file holds.
+#[pyfunction]
+fn _toml_of_json(text: &str) -> PyResult<String> {
+    let v: toml::Value =
+        serde_json::from_str(text).map_err(|e| PyValueError::new_err(format!("study: {e}")))?;
+    toml::to_string(&v).map_err(|e| PyValueError::new_err(format!("study: {e}")))
+}
+
+/// The extension module `repro._repro`.
+#[pymodule]
+fn _repro(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(_solve, m)?)?;
+    m.add_function(wrap_pyfunction!(_predict, m)?)?;
+    m.add_function(wrap_pyfunction!(_lubricant, m)?)?;
+    m.add_function(wrap_pyfunction!(_study, m)?)?;
+    m.add_function(wrap_pyfunction!(_toml_of_json, m)?)?;
+    m.add("LEVELS", (point::MIN_LEVEL, point::MAX_LEVEL))?;
+    Ok(())
+}
