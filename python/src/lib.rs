@@ -84,10 +84,7 @@ fn choice<T: Copy>(flag: &str, value: Option<&str>, names: &[(&str, T)]) -> PyRe
         .map(|(_, t)| Some(*t))
         .ok_or_else(|| {
             let all: Vec<&str> = names.iter().map(|(n, _)| *n).collect();
-            PyValueError::new_err(format!(
-                "{flag}: '{v}' is not one of {}",
-                all.join(", ")
-            ))
+            PyValueError::new_err(format!("{flag}: '{v}' is not one of {}", all.join(", ")))
         })
 }
 
@@ -95,7 +92,10 @@ fn viscosity(v: Option<&str>) -> PyResult<Option<ViscosityLaw>> {
     choice(
         "viscosity",
         v,
-        &[("barus", ViscosityLaw::Barus), ("roelands", ViscosityLaw::Roelands)],
+        &[
+            ("barus", ViscosityLaw::Barus),
+            ("roelands", ViscosityLaw::Roelands),
+        ],
     )
 }
 
@@ -287,9 +287,8 @@ fn _solve<'py>(
             let s = &p.solution;
             let g = &s.grid;
             let (nx, ny) = (g.px(), g.py());
-            let field = |f: &dyn Fn(usize, usize) -> f64| {
-                Array2::from_shape_fn((ny, nx), |(j, i)| f(i, j))
-            };
+            let field =
+                |f: &dyn Fn(usize, usize) -> f64| Array2::from_shape_fn((ny, nx), |(j, i)| f(i, j));
             out.set_item("kind", "point")?;
             out.set_item("X", field(&|i, _| g.x(i)).into_pyarray(py))?;
             out.set_item("Y", field(&|_, j| g.y(j)).into_pyarray(py))?;
@@ -363,7 +362,12 @@ fn _predict<'py>(
     e_prime: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let sheet = datasheet(nu40, iso_vg, nu100, vi, rho15, expansion15, base_oil)?;
-    let physics = physics(self::viscosity(viscosity)?, None, None, Physics::figs_4_to_7());
+    let physics = physics(
+        self::viscosity(viscosity)?,
+        None,
+        None,
+        Physics::figs_4_to_7(),
+    );
     let (ph, load) = (
         ph.as_ref().map(|a| a.as_slice()).transpose()?,
         load.as_ref().map(|a| a.as_slice()).transpose()?,
@@ -372,8 +376,19 @@ fn _predict<'py>(
     let temperature = temperature.as_ref().map(|a| a.as_slice()).transpose()?;
     let lubs = LubricantTable::table1();
     let keys = [
-        "tau_c", "mu_bar", "mu", "mu_bar_refined", "mu_refined", "m", "l", "s_bar", "ph_pa",
-        "hc_m", "eta_bar_ph", "mu_bar_low", "mu_bar_high",
+        "tau_c",
+        "mu_bar",
+        "mu",
+        "mu_bar_refined",
+        "mu_refined",
+        "m",
+        "l",
+        "s_bar",
+        "ph_pa",
+        "hc_m",
+        "eta_bar_ph",
+        "mu_bar_low",
+        "mu_bar_high",
     ];
     let mut cols: Vec<Vec<f64>> = keys.iter().map(|_| Vec::with_capacity(n)).collect();
     for i in 0..n {
@@ -482,9 +497,14 @@ fn _lubricant<'py>(
         }
     }
     let out = PyDict::new(py);
-    for (k, col) in ["eta0_pa_s", "alpha_per_pa", "alpha_low_per_pa", "alpha_high_per_pa"]
-        .iter()
-        .zip(cols)
+    for (k, col) in [
+        "eta0_pa_s",
+        "alpha_per_pa",
+        "alpha_low_per_pa",
+        "alpha_high_per_pa",
+    ]
+    .iter()
+    .zip(cols)
     {
         out.set_item(*k, col.into_pyarray(py))?;
     }

@@ -103,10 +103,7 @@ impl Solved {
         match self {
             Solved::Point(p) => {
                 let (line, warning) = thermal::describe(&p.heat);
-                (
-                    report::point_text(&p.problem, &p.solution) + &line,
-                    warning,
-                )
+                (report::point_text(&p.problem, &p.solution) + &line, warning)
             }
             Solved::Line(l) => (report::line_text(&l.problem, &l.solution), None),
         }
@@ -143,14 +140,7 @@ pub fn solve(
     } else {
         let level = params.level;
         let mut said = |b: &Case| on_base(b, level);
-        solve_case(
-            &case,
-            &problem,
-            &params,
-            &lubricants,
-            &mut said,
-            observer,
-        )?
+        solve_case(&case, &problem, &params, &lubricants, &mut said, observer)?
     };
     let heat = HeatCorrection::of_solution(&case, &problem, &solution, &thermal);
     Ok(Solved::Point(Box::new(PointSolved {
