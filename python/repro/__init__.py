@@ -67,6 +67,9 @@ class Solution:
         self.H: np.ndarray = raw["H"]
         self.hx: Optional[float] = raw.get("hx")
         self.hy: Optional[float] = raw.get("hy")
+        # Wall time of the library's solve and report inside the call (the rest is the
+        # binding's: arguments, arrays, JSON parsing).
+        self._library_seconds: float = raw["library_seconds"]
         d = _json.loads(self.json)
         self._dict = d
         self.m: float = d["m"]

@@ -30,7 +30,7 @@ use repro::solver::point;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// The command line's message with its flags as this module's keywords
 /// (`--s-bar: required` -> `s_bar: required`).
@@ -259,6 +259,7 @@ fn _solve<'py>(
         k_lubricant,
     };
     // The solve runs without the GIL; a progress callback takes it back for each step.
+    let start = Instant::now();
     let solved = py.allow_threads(|| {
         let mut tell = |p: &Progress| {
             if let Some(cb) = &progress {
@@ -279,6 +280,8 @@ fn _solve<'py>(
     let json = serde_json::to_string_pretty(&solved.json())
         .map_err(|e| PyValueError::new_err(e.to_string()))?;
     let (text, warning) = solved.text();
+    // The library's part of the call (solve and report), to measure the binding's overhead.
+    out.set_item("library_seconds", start.elapsed().as_secs_f64())?;
     out.set_item("json", json)?;
     out.set_item("text", text)?;
     out.set_item("warning", warning)?;
