@@ -143,6 +143,7 @@ def predict(
     ph: Any = None,
     load: Any = None,
     temperature: Any = None,
+    refined: bool = False,
     **lubricant: Any,
 ) -> Dict[str, np.ndarray]:
     """The friction of a contact from the mastercurve, as ``repro predict``: Sec. IV's
@@ -152,8 +153,10 @@ def predict(
     ``ph`` (Pa) or ``load`` (N), ``um`` (m/s), ``slip``, ``tau0`` (Pa) and ``temperature`` (C)
     may be numpy arrays (broadcast together). The lubricant keywords are those of
     :func:`lubricant`; also ``viscosity``, ``rx``, ``ry``, ``e_prime``. Returns a dict of
-    arrays: tau_c, mu_bar, mu, mu_bar_refined, mu_refined, m, l, s_bar, ph_pa, hc_m,
-    eta_bar_ph, mu_bar_low, mu_bar_high (over a correlated alpha's band, else NaN).
+    arrays: tau_c, m, l, s_bar, ph_pa, hc_m (the Eq. 10 film, m), eta_bar_ph, mu_bar, mu, and
+    mu_bar_low, mu_bar_high (Eq. 14 over a correlated alpha's band, else NaN); with
+    ``refined=True`` also mu_bar_refined, mu_refined (the refined formula, beyond the paper:
+    its flat-film integral costs tens of microseconds a contact, Eq. 14 about one).
     """
     named = {"um": um, "slip": slip, "tau0": tau0, "ph": ph, "load": load,
              "temperature": temperature}
@@ -164,7 +167,7 @@ def predict(
             for k, a in given.items()}
     out = _repro._predict(
         n=n, ph=flat.get("ph"), load=flat.get("load"), um=flat["um"], slip=flat["slip"],
-        tau0=flat["tau0"], temperature=flat.get("temperature"), **lubricant)
+        tau0=flat["tau0"], temperature=flat.get("temperature"), refined=refined, **lubricant)
     return {k: v.reshape(shape) for k, v in out.items()}
 
 

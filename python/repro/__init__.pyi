@@ -134,6 +134,7 @@ def predict(
     ph: Optional[ArrayLike] = ...,
     load: Optional[ArrayLike] = ...,
     temperature: Optional[ArrayLike] = ...,
+    refined: bool = ...,
     lubricant: Optional[str] = ...,
     alpha: Optional[float] = ...,
     eta0: Optional[float] = ...,

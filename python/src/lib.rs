@@ -8,13 +8,17 @@ use numpy::{IntoPyArray, PyReadonlyArray1};
 use pyo3::exceptions::{PyKeyboardInterrupt, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use repro::paper::prediction::contact::EngineeringContact;
-use repro::paper::prediction::Prediction;
-use repro::physics::case::{LubricantSpec, Physics};
+use repro::paper::prediction::{Band, Prediction};
+use repro::physics::case::{CaseForm, LubricantSpec, Physics};
 use repro::physics::density::DensityLaw;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::pressure_viscosity::BaseOil;
-use repro::physics::traction::Load;
+use repro::physics::traction::{
+    characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
+    ViscosityAtPh,
+};
 use repro::physics::viscosity::ViscosityLaw;
 use repro::pipeline::cache::Cache;
 use repro::pipeline::context::{check_writable, Context};
@@ -332,13 +336,88 @@ fn at(a: &[f64], i: usize) -> f64 {
     }
 }
 
-/// The predictor of `repro predict` (Eq. 12 -> Eq. 14, and the refined formula) over arrays
-/// of equal length `n` (or length 1, broadcast): `ph` (Pa) or `load` (N), `um`, `slip`,
-/// `tau0`, `temperature` (NaN: none). Returns a dict of arrays.
+/// A lubricant resolved at one temperature: `alpha` and `eta0`, and `alpha`'s band when a
+/// correlation estimated it ([`LubricantSpec::resolve`], the datasheet's laws).
+#[derive(Clone, Copy)]
+struct Resolved {
+    alpha_per_pa: f64,
+    eta0_pa_s: f64,
+    band: Option<[f64; 2]>,
+}
+
+fn resolve(spec: &LubricantSpec, lubs: &LubricantTable) -> PyResult<Resolved> {
+    let state = spec
+        .resolve(lubs)
+        .map_err(|e| value_error(solve::flag_error(e)))?;
+    let band = match spec {
+        LubricantSpec::Datasheet {
+            datasheet,
+            temperature_c,
+            alpha_per_gpa,
+        } => datasheet
+            .resolve()
+            .and_then(|d| d.at(*temperature_c, *alpha_per_gpa))
+            .map_err(|e| value_error(solve::flag_error(e.into())))?
+            .correlated
+            .map(|e| [e.low_per_pa, e.high_per_pa]),
+        _ => None,
+    };
+    Ok(Resolved {
+        alpha_per_pa: state.alpha_per_pa,
+        eta0_pa_s: state.eta0_pa_s,
+        band,
+    })
+}
+
+/// Eq. (12)'s `tau_c` of a contact whose lubricant is given by `alpha` and `eta0`, as
+/// [`repro::paper::prediction::Estimate::of`] computes it (the Eq. 10 film, `eta(p_H)` by
+/// the viscosity law): the predictor's `alpha` band is evaluated the same way, with the
+/// band's ends given.
+fn characteristic_at(
+    contact: &EngineeringContact,
+    alpha_per_pa: f64,
+    eta0_pa_s: f64,
+    lubs: &LubricantTable,
+) -> PyResult<Characteristic> {
+    let given = EngineeringContact {
+        lubricant: LubricantSpec::Given {
+            alpha_per_pa,
+            eta0_pa_s,
+        },
+        ..contact.clone()
+    };
+    let case = given
+        .case(lubs)
+        .map_err(|e| value_error(solve::flag_error(e)))?;
+    let CaseForm::Physical(p) = &case.spec else {
+        return Err(PyValueError::new_err("predict takes a physical contact"));
+    };
+    let point = OperatingPoint {
+        contact: Contact::Elliptical {
+            rx_m: p.rx_m,
+            ry_m: p.ry_m,
+        },
+        e_prime_pa: p.e_prime_pa,
+        load: Load::MaxPressure(p.ph_pa),
+        lubricant: p.lubricant.clone(),
+        speed: Speed::Mean(p.um_m_s),
+        sliding: Sliding::Slip(p.slip),
+        tau0_pa: p.tau0_pa,
+        viscosity: ViscosityAtPh::Law(case.physics.viscosity),
+        film: FilmFormula::Eq10,
+    };
+    characteristic(&point, lubs).map_err(|e| value_error(solve::flag_error(e)))
+}
+
+/// The predictor of `repro predict` over arrays of equal length `n` (or length 1,
+/// broadcast): `ph` (Pa) or `load` (N), `um`, `slip`, `tau0`, `temperature`. Eq. (12) ->
+/// Eq. (14) -> `mu`, with Eq. (14) over a correlated `alpha`'s band; with `refined` also the
+/// refined formula (whose flat-film integral costs tens of microseconds a contact). The
+/// lubricant is resolved once per distinct temperature. Returns a dict of arrays.
 #[pyfunction]
 #[pyo3(signature = (*, n, ph, load, um, slip, tau0, temperature, lubricant=None, alpha=None,
     eta0=None, nu40=None, iso_vg=None, nu100=None, vi=None, rho15=None, expansion15=None,
-    base_oil=None, viscosity=None, rx=1.03875e-2, ry=None, e_prime=226e9))]
+    base_oil=None, viscosity=None, rx=1.03875e-2, ry=None, e_prime=226e9, refined=false))]
 #[allow(clippy::too_many_arguments)]
 fn _predict<'py>(
     py: Python<'py>,
@@ -363,6 +442,7 @@ fn _predict<'py>(
     rx: f64,
     ry: Option<f64>,
     e_prime: f64,
+    refined: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let sheet = datasheet(nu40, iso_vg, nu100, vi, rho15, expansion15, base_oil)?;
     let physics = physics(
@@ -378,12 +458,10 @@ fn _predict<'py>(
     let (um, slip, tau0) = (um.as_slice()?, slip.as_slice()?, tau0.as_slice()?);
     let temperature = temperature.as_ref().map(|a| a.as_slice()).transpose()?;
     let lubs = LubricantTable::table1();
-    let keys = [
+    let mut keys = vec![
         "tau_c",
         "mu_bar",
         "mu",
-        "mu_bar_refined",
-        "mu_refined",
         "m",
         "l",
         "s_bar",
@@ -393,16 +471,31 @@ fn _predict<'py>(
         "mu_bar_low",
         "mu_bar_high",
     ];
+    if refined {
+        keys.extend(["mu_bar_refined", "mu_refined"]);
+    }
     let mut cols: Vec<Vec<f64>> = keys.iter().map(|_| Vec::with_capacity(n)).collect();
+    // The lubricant at the temperature of the element before (a sweep of speed has one).
+    let mut state: Option<(Option<u64>, Resolved)> = None;
     for i in 0..n {
         let t = temperature.map(|t| at(t, i));
         let lubricant = spec(lubricant, t, alpha, eta0, &sheet)?;
+        let key = t.map(f64::to_bits);
+        let r = match state {
+            Some((k, r)) if k == key => r,
+            _ => {
+                let r = resolve(&lubricant, &lubs)?;
+                state = Some((key, r));
+                r
+            }
+        };
         let load = match (ph, load) {
             (Some(p), None) => Load::MaxPressure(at(p, i)),
             (None, Some(f)) => Load::Force(at(f, i)),
             (Some(_), Some(_)) => return Err(PyValueError::new_err("ph and load cannot be mixed")),
             (None, None) => return Err(PyValueError::new_err("ph: required (or load)")),
         };
+        let tau0 = at(tau0, i);
         let contact = EngineeringContact {
             lubricant,
             physics,
@@ -412,34 +505,55 @@ fn _predict<'py>(
             e_prime_pa: e_prime,
             um_m_s: at(um, i),
             slip: at(slip, i),
-            tau0_pa: at(tau0, i),
+            tau0_pa: tau0,
         };
-        let case = contact
-            .case(&lubs)
-            .map_err(|e| value_error(solve::flag_error(e)))?;
-        let p = Prediction::of(&case, &lubs).map_err(|e| value_error(solve::flag_error(e)))?;
-        let e = &p.central;
-        let c = &e.characteristic;
-        let band = p.mu_bar_band();
-        let row = [
+        let c = characteristic_at(&contact, r.alpha_per_pa, r.eta0_pa_s, &lubs)?;
+        let mu_bar = eq13_mu_bar(c.tau_c, PAPER_C);
+        let (low, high) = match r.band {
+            Some(band) => {
+                let mut ends = [mu_bar; 3];
+                for (end, alpha) in ends.iter_mut().zip(band) {
+                    let e = characteristic_at(&contact, alpha, r.eta0_pa_s, &lubs)?;
+                    *end = eq13_mu_bar(e.tau_c, PAPER_C);
+                }
+                let b = Band::of(&ends);
+                (b.low, b.high)
+            }
+            None => (f64::NAN, f64::NAN),
+        };
+        let mut row = vec![
             c.tau_c,
-            e.mu_bar,
-            e.mu,
-            e.mu_bar_refined,
-            e.mu_refined,
+            mu_bar,
+            c.friction(mu_bar, tau0),
             c.m,
             c.l,
             c.s_bar,
             c.ph_pa,
             c.hc_m,
             c.eta_bar_ph,
-            band.map_or(f64::NAN, |b| b.low),
-            band.map_or(f64::NAN, |b| b.high),
+            low,
+            high,
         ];
+        if refined {
+            let case = contact
+                .case(&lubs)
+                .map_err(|e| value_error(solve::flag_error(e)))?;
+            let p = Prediction::of(&case, &lubs).map_err(|e| value_error(solve::flag_error(e)))?;
+            row.extend([p.central.mu_bar_refined, p.central.mu_refined]);
+        }
         for (col, v) in cols.iter_mut().zip(row) {
             col.push(v);
         }
     }
+    columns(py, &keys, cols)
+}
+
+/// Named columns as a dict of numpy arrays.
+fn columns<'py>(
+    py: Python<'py>,
+    keys: &[&str],
+    cols: Vec<Vec<f64>>,
+) -> PyResult<Bound<'py, PyDict>> {
     let out = PyDict::new(py);
     for (k, col) in keys.iter().zip(cols) {
         out.set_item(*k, col.into_pyarray(py))?;
@@ -471,47 +585,28 @@ fn _lubricant<'py>(
     let temperature = temperature.as_ref().map(|a| a.as_slice()).transpose()?;
     let n = temperature.map_or(1, |t| t.len());
     let lubs = LubricantTable::table1();
-    let mut cols = [(); 4].map(|_| Vec::with_capacity(n));
+    let mut cols = vec![Vec::with_capacity(n); 4];
     for i in 0..n {
         let t = temperature.map(|t| t[i]);
-        let s = spec(lubricant, t, alpha, eta0, &sheet)?;
-        let state = s
-            .resolve(&lubs)
-            .map_err(|e| value_error(solve::flag_error(e)))?;
-        let band = match &s {
-            LubricantSpec::Datasheet {
-                datasheet,
-                temperature_c,
-                alpha_per_gpa,
-            } => datasheet
-                .resolve()
-                .and_then(|d| d.at(*temperature_c, *alpha_per_gpa))
-                .map_err(|e| value_error(solve::flag_error(e.into())))?
-                .correlated
-                .map(|e| [e.low_per_pa, e.high_per_pa]),
-            _ => None,
-        };
-        let [low, high] = band.unwrap_or([f64::NAN; 2]);
+        let r = resolve(&spec(lubricant, t, alpha, eta0, &sheet)?, &lubs)?;
+        let [low, high] = r.band.unwrap_or([f64::NAN; 2]);
         for (col, v) in cols
             .iter_mut()
-            .zip([state.eta0_pa_s, state.alpha_per_pa, low, high])
+            .zip([r.eta0_pa_s, r.alpha_per_pa, low, high])
         {
             col.push(v);
         }
     }
-    let out = PyDict::new(py);
-    for (k, col) in [
-        "eta0_pa_s",
-        "alpha_per_pa",
-        "alpha_low_per_pa",
-        "alpha_high_per_pa",
-    ]
-    .iter()
-    .zip(cols)
-    {
-        out.set_item(*k, col.into_pyarray(py))?;
-    }
-    Ok(out)
+    columns(
+        py,
+        &[
+            "eta0_pa_s",
+            "alpha_per_pa",
+            "alpha_low_per_pa",
+            "alpha_high_per_pa",
+        ],
+        cols,
+    )
 }
 
 /// A sweep (TOML text; `file` names it in errors) through the pipeline and cache of

@@ -16,15 +16,29 @@ def test_predict_is_the_cli_predictor(cli):
     out = json.loads(cli("predict", "--iso-vg", 100, "--vi", 95, "--rho15", 880, "--base-oil",
                          "mineral", "--temperature", 60, "--ph", 1e9, "--um", 5, "--slip",
                          0.02, "--tau0", 5e6, "--json").stdout)
-    p = repro.predict(um=5.0, temperature=60.0, **CONTACT, **OIL)
+    p = repro.predict(um=5.0, temperature=60.0, refined=True, **CONTACT, **OIL)
     for key in ["tau_c", "mu_bar", "mu", "mu_bar_refined", "mu_refined", "m", "l", "hc_m"]:
         assert p[key].item() == out[key], key
     assert [p["mu_bar_low"].item(), p["mu_bar_high"].item()] == out["mu_bar_band"]
+    # Without the refined formula the same Eq. (14).
+    fast = repro.predict(um=5.0, temperature=60.0, **CONTACT, **OIL)
+    assert fast["mu_bar"].item() == out["mu_bar"] and "mu_bar_refined" not in fast
     lub = repro.lubricant(temperature=60.0, **OIL)
     assert lub["eta0_pa_s"].item() == out["lubricant"]["eta0_pa_s"]
     assert lub["alpha_per_pa"].item() == out["lubricant"]["alpha_per_pa"]
     band = [lub["alpha_low_per_pa"].item(), lub["alpha_high_per_pa"].item()]
     assert band == out["lubricant"]["alpha_band_per_pa"]
+
+
+def test_predict_of_a_table1_lubricant_and_a_load_is_the_cli_predictor(cli):
+    out = json.loads(cli("predict", "--lubricant", "mineral-oil-a", "--temperature", 40,
+                         "--load", 500, "--um", 12, "--slip", 0.005, "--tau0", 4e6,
+                         "--json").stdout)
+    p = repro.predict(lubricant="mineral-oil-a", temperature=40.0, load=500.0, um=12.0,
+                      slip=0.005, tau0=4e6, refined=True)
+    for key in ["ph_pa", "tau_c", "mu_bar", "mu", "mu_bar_refined", "mu_refined"]:
+        assert p[key].item() == out[key], key
+    assert out["mu_bar_band"] is None and np.isnan(p["mu_bar_low"].item())
 
 
 def test_predict_over_ten_thousand_speeds():
