@@ -585,7 +585,7 @@ fn _lubricant<'py>(
     let temperature = temperature.as_ref().map(|a| a.as_slice()).transpose()?;
     let n = temperature.map_or(1, |t| t.len());
     let lubs = LubricantTable::table1();
-    let mut cols = vec![Vec::with_capacity(n); 4];
+    let mut cols: Vec<Vec<f64>> = (0..4).map(|_| Vec::with_capacity(n)).collect();
     for i in 0..n {
         let t = temperature.map(|t| t[i]);
         let r = resolve(&spec(lubricant, t, alpha, eta0, &sheet)?, &lubs)?;
