@@ -10,15 +10,12 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use repro::paper::prediction::contact::EngineeringContact;
-use repro::paper::prediction::{Band, Prediction};
-use repro::physics::case::{CaseForm, LubricantSpec, Physics};
+use repro::paper::prediction::{operating_point, Band, Prediction};
+use repro::physics::case::{LubricantSpec, Physics};
 use repro::physics::density::DensityLaw;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::pressure_viscosity::BaseOil;
-use repro::physics::traction::{
-    characteristic, Characteristic, Contact, FilmFormula, Load, OperatingPoint, Sliding, Speed,
-    ViscosityAtPh,
-};
+use repro::physics::traction::{characteristic, Characteristic, Load};
 use repro::physics::viscosity::ViscosityLaw;
 use repro::pipeline::cache::Cache;
 use repro::pipeline::context::{check_writable, Context};
@@ -370,8 +367,7 @@ fn resolve(spec: &LubricantSpec, lubs: &LubricantTable) -> PyResult<Resolved> {
 }
 
 /// Eq. (12)'s `tau_c` of a contact whose lubricant is given by `alpha` and `eta0`, as
-/// [`repro::paper::prediction::Estimate::of`] computes it (the Eq. 10 film, `eta(p_H)` by
-/// the viscosity law): the predictor's `alpha` band is evaluated the same way, with the
+/// [`repro::paper::prediction::Estimate::of`] computes it (its operating point): the predictor's `alpha` band is evaluated the same way, with the
 /// band's ends given.
 fn characteristic_at(
     contact: &EngineeringContact,
@@ -389,23 +385,7 @@ fn characteristic_at(
     let case = given
         .case(lubs)
         .map_err(|e| value_error(solve::flag_error(e)))?;
-    let CaseForm::Physical(p) = &case.spec else {
-        return Err(PyValueError::new_err("predict takes a physical contact"));
-    };
-    let point = OperatingPoint {
-        contact: Contact::Elliptical {
-            rx_m: p.rx_m,
-            ry_m: p.ry_m,
-        },
-        e_prime_pa: p.e_prime_pa,
-        load: Load::MaxPressure(p.ph_pa),
-        lubricant: p.lubricant.clone(),
-        speed: Speed::Mean(p.um_m_s),
-        sliding: Sliding::Slip(p.slip),
-        tau0_pa: p.tau0_pa,
-        viscosity: ViscosityAtPh::Law(case.physics.viscosity),
-        film: FilmFormula::Eq10,
-    };
+    let point = operating_point(&case).map_err(|e| value_error(solve::flag_error(e)))?;
     characteristic(&point, lubs).map_err(|e| value_error(solve::flag_error(e)))
 }
 
