@@ -1,8 +1,14 @@
 # repro: regenerate "A Generalized Traction Curve for EHL Contacts" from first principles.
 CARGO ?= cargo
 LEVEL ?= 7
+PYTHON ?= python3
+VENV ?= .venv
+# Cargo's folder, shared by the Python package's build (python/ is a crate of its own, whose
+# default folder would be python/target): the library and its dependencies compile once.
+CARGO_TARGET_DIR ?= $(CURDIR)/target
+export CARGO_TARGET_DIR
 
-.PHONY: build test figures table4 snapshots check lint bench clean slurm-check
+.PHONY: build test python python-test figures table4 snapshots check lint bench clean slurm-check
 
 build:
 	$(CARGO) build --release
@@ -10,6 +16,22 @@ build:
 # The test command of the README and of .ci/run.
 test:
 	$(CARGO) test --release --all-targets
+	$(MAKE) python-test
+
+# The Python package (python/, `import repro`): maturin builds the abi3 wheel into the
+# virtual environment $(VENV) (created with maturin, numpy, pytest and matplotlib, for the
+# README's example, from PyPI on first use).
+$(VENV)/bin/maturin:
+	$(PYTHON) -m venv $(VENV)
+	$(VENV)/bin/pip install -q --upgrade pip
+	$(VENV)/bin/pip install -q "maturin>=1.5,<2" numpy pytest matplotlib
+
+python: $(VENV)/bin/maturin
+	cd python && VIRTUAL_ENV=$(CURDIR)/$(VENV) $(CURDIR)/$(VENV)/bin/maturin develop --release -q
+
+# The pytest suite compares the package with the binary (REPRO_BIN), so both are built.
+python-test: build python
+	REPRO_BIN=$(CARGO_TARGET_DIR)/release/repro $(VENV)/bin/python -m pytest -q python/tests
 
 # Regenerate the paper: Tables 1-4, Figs. 1-8, the mastercurve target (beyond the paper),
 # figures/summary.csv and figures/index.html
@@ -43,6 +65,7 @@ slurm-check: build
 lint:
 	$(CARGO) fmt --all -- --check
 	$(CARGO) clippy --all-targets -- -D warnings
+	cd python && $(CARGO) fmt -- --check && $(CARGO) clippy --release -- -D warnings
 
 clean:
 	$(CARGO) clean

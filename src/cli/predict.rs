@@ -13,7 +13,6 @@
 use super::args::PredictArgs;
 use super::config::{check_level, flag_error, lubricant_spec, physics};
 use super::print::{print_failure, rolling_text, solve_progress};
-use super::solve::point_report;
 use super::thermal;
 use anyhow::{bail, Result};
 use repro::paper::prediction::contact::EngineeringContact;
@@ -24,6 +23,7 @@ use repro::physics::lubricant::LubricantTable;
 use repro::physics::traction::Load;
 use repro::pipeline::base::solve_case;
 use repro::pipeline::error::PipelineError;
+use repro::report::solve::point_report;
 use repro::solver::point::{Params, PointSolution};
 use serde_json::json;
 use std::time::Instant;
@@ -36,9 +36,14 @@ pub fn run(args: &PredictArgs) -> Result<bool> {
         args.temperature,
         args.alpha,
         args.eta0,
-        &args.datasheet,
+        &args.datasheet.inputs(),
     )?;
-    let physics = physics(args.viscosity, args.density, None, Physics::figs_4_to_7());
+    let physics = physics(
+        args.viscosity.map(|v| v.law()),
+        args.density.map(|d| d.law()),
+        None,
+        Physics::figs_4_to_7(),
+    );
     let load = match (args.ph, args.load) {
         (Some(ph), None) => Load::MaxPressure(ph),
         (None, Some(f)) => Load::Force(f),

@@ -4,6 +4,7 @@
 //! no fonts, no network).
 
 pub mod html;
+pub mod solve;
 
 use crate::paper::artefact::{Artefact, ErrorSummary, Measure, Spread, TargetReport};
 use crate::paper::{build, find};

@@ -291,19 +291,6 @@ pub struct DatasheetArgs {
     pub base_oil: Option<BaseOilArg>,
 }
 
-impl DatasheetArgs {
-    /// Whether any datasheet flag was given.
-    pub fn any(&self) -> bool {
-        self.nu40.is_some()
-            || self.iso_vg.is_some()
-            || self.nu100.is_some()
-            || self.vi.is_some()
-            || self.rho15.is_some()
-            || self.expansion15.is_some()
-            || self.base_oil.is_some()
-    }
-}
-
 #[derive(Debug, Clone, Copy, ValueEnum)]
 pub enum BaseOilArg {
     /// Mineral oil.

@@ -46,21 +46,7 @@ impl Estimate {
     /// case's viscosity law; also returns the case's problem (the refined formula's input).
     pub fn of(case: &Case, lubs: &LubricantTable) -> Result<(Self, Problem), CaseError> {
         let p = physical(case)?;
-        let point = OperatingPoint {
-            contact: Contact::Elliptical {
-                rx_m: p.rx_m,
-                ry_m: p.ry_m,
-            },
-            e_prime_pa: p.e_prime_pa,
-            load: Load::MaxPressure(p.ph_pa),
-            lubricant: p.lubricant.clone(),
-            speed: Speed::Mean(p.um_m_s),
-            sliding: Sliding::Slip(p.slip),
-            tau0_pa: p.tau0_pa,
-            viscosity: ViscosityAtPh::Law(case.physics.viscosity),
-            film: FilmFormula::Eq10,
-        };
-        let c = characteristic(&point, lubs)?;
+        let c = characteristic(&operating_point(case)?, lubs)?;
         let mu_bar = eq13_mu_bar(c.tau_c, PAPER_C);
         let problem = Problem::from_case(case, lubs)?;
         let mu_bar_refined = REFINED.predict(&Features::point(&problem));
@@ -75,6 +61,26 @@ impl Estimate {
             problem,
         ))
     }
+}
+
+/// The operating point of a physical point-contact case as the predictor reads it: the
+/// Eq. (10) film, `eta(p_H)` from the case's viscosity law.
+pub fn operating_point(case: &Case) -> Result<OperatingPoint, CaseError> {
+    let p = physical(case)?;
+    Ok(OperatingPoint {
+        contact: Contact::Elliptical {
+            rx_m: p.rx_m,
+            ry_m: p.ry_m,
+        },
+        e_prime_pa: p.e_prime_pa,
+        load: Load::MaxPressure(p.ph_pa),
+        lubricant: p.lubricant.clone(),
+        speed: Speed::Mean(p.um_m_s),
+        sliding: Sliding::Slip(p.slip),
+        tau0_pa: p.tau0_pa,
+        viscosity: ViscosityAtPh::Law(case.physics.viscosity),
+        film: FilmFormula::Eq10,
+    })
 }
 
 /// A closed range `[low, high]`.

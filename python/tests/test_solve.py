@@ -1,0 +1,138 @@
+"""repro.solve against repro solve --json: the same bits, fields with the right shape and
+load, errors as the command line's."""
+
+import json
+import math
+
+import numpy as np
+import pytest
+
+import repro
+
+# The Table 4 case (cases/table4.toml) and Fig. 6 case 23, at level 6 to keep the suite fast.
+TABLE4 = dict(lubricant="mineral-oil-a", temperature=40.0, ph=3e9, um=12.0, slip=0.005,
+              tau0=4e6, level=6)
+CASE23 = dict(lubricant="5p4e", temperature=40.0, ph=1e9, um=12.0, slip=0.005, tau0=6e6,
+              level=6)
+# The line contact of the README.
+LINE = dict(line=True, lubricant="mineral-oil-a", temperature=40.0, ph=3e9, um=7.0,
+            slip=0.001, tau0=8e6)
+
+
+def flags(inputs):
+    out = []
+    for k, v in inputs.items():
+        flag = "--" + k.replace("_", "-")
+        if v is True:
+            out.append(flag)
+        else:
+            out += [flag, str(v)]
+    return out
+
+
+def timeless(v):
+    """The object without its wall times (which no two runs share)."""
+    if isinstance(v, dict):
+        return {k: timeless(x) for k, x in v.items() if "seconds" not in k}
+    if isinstance(v, list):
+        return [timeless(x) for x in v]
+    return v
+
+
+def cli_json(cli, inputs):
+    return json.loads(cli("solve", *flags(inputs), "--json", "-q").stdout)
+
+
+@pytest.mark.parametrize("inputs", [TABLE4, CASE23, LINE], ids=["table4", "fig6-case23", "line"])
+def test_same_bits_as_the_cli(cli, inputs):
+    expected = timeless(cli_json(cli, inputs))
+    s = repro.solve(**inputs)
+    # dict equality compares every float exactly: the same bits.
+    assert timeless(s.as_dict()) == expected
+    assert s.mu_bar_sliding == expected["mu_bar_sliding"]
+    assert s.tau_c == expected["tau_c"]
+
+
+def test_the_summary_is_the_cli_text(cli):
+    inputs = dict(m=20, l=10, s_bar=0.5, level=5)
+    text = cli("solve", *flags(inputs), "-q").stdout
+    s = repro.solve(**inputs)
+
+    def untimed(t):
+        return [line for line in t.splitlines() if not line.startswith(("grid ", "thermal"))]
+
+    assert untimed(s.text) == untimed(text)
+
+
+def test_point_fields_have_the_grid_shape_and_carry_the_load():
+    # With P = 0 on the domain's edge the whole load is on the grid: the integral of
+    # P = p/p_H over X = x/a, Y = y/b is the Hertzian 2 pi / 3.
+    s = repro.solve(m=20, l=10, s_bar=0.5, level=5, edge="zero")
+    n = 2 ** 6 + 1
+    assert s.X.shape == s.Y.shape == s.P.shape == s.H.shape == (n, n)
+    assert np.all(np.diff(s.X, axis=1) > 0) and np.all(np.diff(s.Y, axis=0) > 0)
+    assert np.all(s.P[0] == 0) and np.all(s.P[:, 0] == 0)
+    load = s.P.sum() * s.hx * s.hy
+    # The solver stops when its own integral (this one: P vanishes on the edge) is within
+    # its load tolerance and reports the defect as load_error; 1e-9 covers the summation
+    # order's rounding.
+    assert abs(load / (2 * math.pi / 3) - 1) <= s.as_dict()["load_error"] + 1e-9
+    assert s.as_dict()["load_error"] < 1e-5
+    # The central film of the report is the field's value at X = Y = 0.
+    j, i = np.unravel_index(np.argmin(s.X**2 + s.Y**2), s.X.shape)
+    assert s.H[j, i] == s.h_central
+
+
+def test_line_fields_are_one_dimensional():
+    s = repro.solve(**LINE)
+    assert s.kind == "line" and s.Y is None
+    assert s.X.ndim == s.P.ndim == s.H.ndim == 1 and s.X.shape == s.P.shape == s.H.shape
+    assert s.P.max() > 0.5 and np.all(s.H > 0)
+
+
+@pytest.mark.parametrize(
+    "inputs, message",
+    [
+        (dict(m=20, l=10), "s_bar: required"),
+        (dict(m=20, l=10, s_bar=1, lubricant="mineral-oil-a"), "cannot be mixed"),
+        (dict(lubricant="no-such-oil", temperature=40, ph=1e9, um=1, slip=0.1, tau0=1e6),
+         "^lubricant: "),
+        (dict(m=20, l=10, s_bar=1, level=30), "^level: level 30 outside"),
+        (dict(m=20, l=10, s_bar=1, k_solid=-1.0), "^k_solid: a conductivity must be positive"),
+        (dict(m=20, l=10, s_bar=1, viscosity="sticky"), "^viscosity: 'sticky' is not one of"),
+        (dict(m=20, l=10, s_bar=1, line=True, d=0.5), "^d: a line contact"),
+        (dict(nu40=100, temperature=40, ph=1e9, um=1, slip=0.1, tau0=1e6), "^nu100: required"),
+    ],
+)
+def test_bad_input_raises_value_error_naming_the_argument(inputs, message):
+    with pytest.raises(ValueError, match=message):
+        repro.solve(**inputs)
+
+
+def test_bad_input_has_the_cli_message(cli):
+    r = cli("solve", "--m", "20", "--l", "10", check=False)
+    with pytest.raises(ValueError) as e:
+        repro.solve(m=20, l=10)
+    assert r.stderr.strip() == "error: " + str(e.value).replace("s_bar", "--s-bar")
+
+
+def test_failed_solve_raises_solve_error_with_its_history(cli):
+    inputs = dict(line=True, m=20, l=10, s_bar=0.5, level=8)
+    r = cli("solve", *flags(inputs), check=False)
+    assert r.returncode == 1
+    with pytest.raises(repro.SolveError) as e:
+        repro.solve(**inputs)
+    assert e.value.kind == "not_converged"
+    assert len(e.value.residual_history) > 1
+    assert str(e.value) in r.stderr
+    # The CLI prints the history in Rust's shortest round-trip form, which reads back exactly.
+    line = next(x for x in r.stderr.splitlines() if x.startswith("residual history: "))
+    printed = [float(v) for v in line.split(": ", 1)[1].strip("[]").split(", ")]
+    assert e.value.residual_history == printed
+
+
+def test_progress_hears_every_step():
+    steps = []
+    s = repro.solve(m=20, l=10, s_bar=0.5, level=5, cold=True,
+                    progress=lambda level, step, residual, hc: steps.append((level, step)))
+    assert len(steps) >= s.as_dict()["cycles"] > 0
