@@ -397,11 +397,11 @@ fn solve_with(
         )?;
         let may_refine =
             refinements < params.refinement_levels && level_number(mg.finest()) < MAX_LEVEL;
-        let closed = friction::film(mg.finest(), g.moes_film_scale).h_min <= 0.0;
+        let film = friction::film(mg.finest(), g.moes_film_scale);
+        let closed = film.h_min <= 0.0;
         if !(params.require_positive_film && closed && may_refine) {
             let fine = mg.finest();
-            let film = friction::film(fine, g.moes_film_scale);
-            if params.require_positive_film && film.h_min <= 0.0 {
+            if params.require_positive_film && closed {
                 let level = level_number(fine);
                 return Err(SolveError::FilmCollapse {
                     h_min: film.h_min,
