@@ -12,7 +12,9 @@ fn solve_json_has_every_documented_key() {
     for key in SOLVE_KEYS {
         assert!(v.get(key).is_some(), "missing key {key}");
     }
-    assert_eq!(v["level"], 4);
+    // Asked for level 4, solved on 5: level 4's friction estimate misses the rule's 1 %
+    // target (point::AccuracyTarget::FRICTION), so the solve adds a level.
+    assert_eq!(v["level"], 5);
     // A light case: the cycles converge by themselves and the Newton finish never starts.
     assert_eq!(v["newton_steps"], 0);
     assert_eq!(v["krylov_iterations"], 0);

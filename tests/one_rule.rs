@@ -22,7 +22,14 @@ use repro::pipeline::outcome::{CaseOutcome, SolvedCase};
 use repro::pipeline::sweep::Sweep;
 use std::path::Path;
 
+/// The level the paths are compared at: cheap, and where the 5P4E contacts meet the rule's
+/// accuracy target without a finer level (the accuracy study measures a level as it is, so it
+/// equals the other paths only where they stay on theirs).
 const LEVEL: u32 = 5;
+
+/// The light Barus case's: it meets the 1 % friction target at level 7 (0.68 %); at levels 5
+/// and 6 the rule refines it one level, which the accuracy study's point does not.
+const LIGHT_LEVEL: u32 = 7;
 
 /// The 5P4E contact of issue 29 (M about 4.8: a light case, whose domain is not the paper's):
 /// Table 1's 5P4E at 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa, on the default ball (Rx
@@ -157,7 +164,12 @@ impl Outputs {
 
 /// `repro solve FLAGS --level 5 --json`.
 fn solve(flags: &[&str]) -> Outputs {
-    let level = LEVEL.to_string();
+    solve_at(flags, LEVEL)
+}
+
+/// `repro solve FLAGS --level LEVEL --json`.
+fn solve_at(flags: &[&str], level: u32) -> Outputs {
+    let level = level.to_string();
     let mut args = vec!["solve"];
     args.extend(flags);
     solve_args(args, &level)
@@ -194,17 +206,22 @@ fn predict(flags: &[&str]) -> Outputs {
 /// `repro run FILE --level 5` of a one-point study, read back from its cache entry (the
 /// CSV rounds to 7 digits; the entry holds the record's full bits).
 fn study(name: &str, text: &str) -> Outputs {
+    study_at(name, text, LEVEL)
+}
+
+/// [`study`] at `level`.
+fn study_at(name: &str, text: &str, level: u32) -> Outputs {
     let dir = scratch("one_rule", name);
     let file = dir.join(format!("{name}.toml"));
     std::fs::write(&file, text).expect("write the study");
-    let level = LEVEL.to_string();
+    let level_flag = level.to_string();
     let (code, out, err) = repro_in(
         Path::new(env!("CARGO_MANIFEST_DIR")),
         &[
             "run",
             file.to_str().expect("utf-8 path"),
             "--level",
-            &level,
+            &level_flag,
             "--cache",
             dir.join("cache").to_str().expect("utf-8 path"),
             "--out",
@@ -216,7 +233,7 @@ fn study(name: &str, text: &str) -> Outputs {
     let cache = Cache::new(dir.join("cache"));
     // The point's own entry (a point that is not its own base has its base's entry beside it).
     let sweep = Sweep::parse("one-rule.toml", text).expect("a valid study");
-    let job = point_jobs(&sweep.cases, LEVEL)
+    let job = point_jobs(&sweep.cases, level)
         .expect("the study's job")
         .remove(0)
         .job;
@@ -233,9 +250,14 @@ fn study(name: &str, text: &str) -> Outputs {
 
 /// The accuracy study's pipeline ([`pipeline_params`]) on `contact` at level 5.
 fn accuracy(contact: &AccuracyProblem) -> Outputs {
+    accuracy_at(contact, LEVEL)
+}
+
+/// [`accuracy`] at `level`.
+fn accuracy_at(contact: &AccuracyProblem, level: u32) -> Outputs {
     Outputs::of_measured(
         &contact
-            .solve(LEVEL)
+            .solve(level)
             .expect("the accuracy pipeline converges"),
     )
 }
@@ -265,14 +287,14 @@ fn every_path_solves_the_5p4e_contact_alike() {
 #[test]
 fn every_path_solves_the_light_barus_case_alike() {
     // `repro predict` takes the physical form only: this case goes through the other paths.
-    let by_solve = solve(&FLAGS_LIGHT);
-    let by_study = study("light", STUDY_LIGHT);
+    let by_solve = solve_at(&FLAGS_LIGHT, LIGHT_LEVEL);
+    let by_study = study_at("light", STUDY_LIGHT, LIGHT_LEVEL);
     let cases = accuracy_cases(false).expect("the accuracy study's cases");
     let light = cases
         .iter()
         .find(|c| c.name == "light-barus")
         .expect("the accuracy study has light-barus");
-    let by_accuracy = accuracy(&light.contact);
+    let by_accuracy = accuracy_at(&light.contact, LIGHT_LEVEL);
     assert_eq!(by_study, by_solve, "repro run vs repro solve");
     assert_eq!(
         by_accuracy,

@@ -237,7 +237,17 @@ fn hard_case_at_level_7(case: &Case, what: &str) -> PointSolution {
     let params = Params::for_problem(&p, 7);
     let s = solve(&p, &params, None).unwrap_or_else(|e| panic!("{what}: {e}"));
     assert_sound(&s, what);
-    assert_eq!(s.info.level, 7, "{what}: the film needed no finer grid");
+    // The film needed no finer grid: solved on level 7, or refined to 8 for the friction's
+    // accuracy target alone, with level 7's film open (its minimum film positive).
+    let level_7_open = s
+        .errors
+        .as_ref()
+        .is_some_and(|e| e.levels.iter().any(|l| l.level == 7 && l.h_min > 0.0));
+    assert!(
+        s.info.level == 7 || (s.info.level == 8 && level_7_open),
+        "{what}: the film needed a finer grid (level {})",
+        s.info.level
+    );
     s
 }
 
@@ -425,12 +435,12 @@ fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level
     let c = physical("mineral-oil-a", 100.0, 2e9, 12.0, 0.02, 4e6, 1.0);
     let p = problem(&c);
     let rule = Params::for_problem(&p, 7);
-    assert_eq!(rule.accuracy, None, "the rule sets no target (its cost)");
-    let target = Params {
-        accuracy: Some(AccuracyTarget::FRICTION),
-        ..rule.clone()
-    };
-    let s = solve(&p, &target, None).unwrap();
+    assert_eq!(
+        rule.accuracy,
+        Some(AccuracyTarget::FRICTION),
+        "the rule's target"
+    );
+    let s = solve(&p, &rule, None).unwrap();
     assert_eq!(s.info.level, 8);
     assert_sound(&s, "M 1 484 refined");
     let e = s.errors.as_ref().unwrap();
@@ -455,7 +465,15 @@ fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level
         assert!(rel(got, want) < 5e-4, "{what}: {got} vs {want}");
     }
     // Without the target the solve stays on level 7 with its bound.
-    let plain = solve(&p, &rule, None).unwrap();
+    let plain = solve(
+        &p,
+        &Params {
+            accuracy: None,
+            ..rule
+        },
+        None,
+    )
+    .unwrap();
     assert_eq!(plain.info.level, 7);
     let bound = plain
         .errors

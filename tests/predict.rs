@@ -129,7 +129,7 @@ fn predict_warns_where_the_paper_says_the_mastercurve_fails() {
 
 #[test]
 fn predict_with_solve_prints_both_and_the_difference() {
-    // Table 3 case 1 on a circular contact at level 4: a fraction of a second.
+    // Table 3 case 1 on a circular contact from level 4: a fraction of a second.
     let (code, out, err) = repro(&[
         "predict", "--alpha", "18.6e-9", "--eta0", "4.19e-3", "--ph", "1e9", "--um", "12",
         "--slip", "0.02", "--tau0", "8e6", "--solve", "--level", "4", "--json",
@@ -137,7 +137,8 @@ fn predict_with_solve_prints_both_and_the_difference() {
     assert_eq!(code, 0, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let solved = v["solve"]["mu_bar_sliding"].as_f64().expect("solve part");
-    assert_eq!(v["solve"]["level"], 4);
+    // Asked for level 4, solved on 5: level 4's friction estimate misses the rule's 1 % target.
+    assert_eq!(v["solve"]["level"], 5);
     let d = v["difference"]["mu_bar"].as_f64().unwrap();
     assert!((d - (v["mu_bar"].as_f64().unwrap() - solved)).abs() < 1e-12);
     // The solve's mu in physical terms: mu-bar tau0 / p_H.

@@ -142,7 +142,8 @@ pub struct SolveArgs {
 
     // Numerics and output.
     /// Grid level: 2^(level+1) points per direction (default 7, the paper's 256 x 256; with
-    /// --line default 8, 512 intervals).
+    /// --line default 8, 512 intervals). A point contact whose sliding friction is estimated
+    /// more than 1 % off there is solved one level finer; the output names the level.
     #[arg(long, help_heading = "Numerics")]
     pub level: Option<u32>,
     /// Computational domain.

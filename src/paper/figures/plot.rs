@@ -107,14 +107,18 @@ impl Plot {
         solved.estimate(self.y.output()).map(|e| e.error)
     }
 
-    /// The names of the `x` and `y` columns of the figure's CSV.
+    /// The names of the `x` and `y` columns of the figure's CSV: what they plot, the `y`
+    /// (and `tau_c`'s `x`) with a suffix, for the row has that output's own column too.
     pub fn columns(self) -> (&'static str, &'static str) {
-        match (self.x, self.y) {
-            (Abscissa::Severity, Friction::Total) => ("s_bar_quarter_m_l3", "mu_bar_total"),
-            (Abscissa::Severity, Friction::Sliding) => ("s_bar_quarter_m_l3", "mu_bar_sliding"),
-            (Abscissa::TauC, Friction::Total) => ("tau_c_x", "mu_bar_total_y"),
-            (Abscissa::TauC, Friction::Sliding) => ("tau_c_x", "mu_bar_sliding_y"),
-        }
+        let x = match self.x {
+            Abscissa::Severity => "s_bar_quarter_m_l3",
+            Abscissa::TauC => "tau_c_x",
+        };
+        let y = match self.y {
+            Friction::Total => "mu_bar_total_y",
+            Friction::Sliding => "mu_bar_sliding_y",
+        };
+        (x, y)
     }
 
     /// The axis labels of the picture, x then y.

@@ -130,10 +130,10 @@ pub struct Params {
     pub refinement_levels: u32,
     /// The estimated discretisation errors the solve refines its grid to meet, within
     /// [`Params::refinement_levels`] ([`super::AccuracyTarget`]; needs [`Params::error_levels`]).
-    /// Default none, in the rule too: 1 % in friction ([`super::AccuracyTarget::FRICTION`])
-    /// takes about a third of the paper's cases to level 8, at 1.5 times its CPU time and 1.65
-    /// times its wall time (docs/ACCURACY_NOTES.md, "Refinement to a target"); an expert sets
-    /// it on top of the rule.
+    /// Default none (studies of the numerics solve the level they are given); the rule sets 1 %
+    /// in friction ([`super::AccuracyTarget::FRICTION`]), which takes 448 of the paper's 1 369
+    /// solves to level 8 and 929 of the 980 rows of Figs. 1 and 3-7 within 1 %, at 1.53 times
+    /// its CPU and wall time (docs/ACCURACY_NOTES.md, "Refinement to a target").
     pub accuracy: Option<super::AccuracyTarget>,
     /// Coarser levels solved on their own after the finest, for the outputs' discretisation
     /// error ([`crate::solver::richardson`], the `ladder` module); 0 for none. Default 0 (studies of
@@ -203,8 +203,9 @@ impl Params {
     /// ([`FrictionRegion::LoadedFilm`]), so that neither the film nor the friction depends on
     /// where the domain ends (`docs/DOMAIN_NOTES.md`), and on a chain of nested domains where
     /// the case-sized domain reaches far beyond the contact ([`Params::nested`]: the light
-    /// contacts, whose uniform grid is 3-5 times coarser in the contact than the paper's).
-    /// The far field's amplitude is the
+    /// contacts, whose uniform grid is 3-5 times coarser in the contact than the paper's),
+    /// refined one level where the sliding friction's estimated error misses 1 %
+    /// ([`Params::accuracy`]). The far field's amplitude is the
     /// a-priori one: the domain keeps the load outside below 8 %, where fitting it moved
     /// film and friction by 0.05 % or less at level 7 on M 1, 5 and 50 and on Fig. 6 case 23;
     /// at M 20, L 30 by 0.4 % and 0.7 %, and there the a-priori edge is the better converged
@@ -221,6 +222,7 @@ impl Params {
             friction_region: FrictionRegion::LoadedFilm,
             error_levels: ERROR_LEVELS,
             nested: !super::chain::rectangles(&domain).is_empty(),
+            accuracy: Some(super::AccuracyTarget::FRICTION),
             ..Params::default()
         }
     }

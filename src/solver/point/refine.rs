@@ -30,7 +30,7 @@ impl AccuracyTarget {
     /// The Moes load from which the heavy contacts' film bound applies.
     pub const HEAVY_M: f64 = 5000.0;
 
-    /// The rule's: 1 % in friction. The film is not a target: with issue 39's film bounds
+    /// The rule's ([`Params::for_problem`]): 1 % in friction. The film is not a target: with issue 39's film bounds
     /// (2 %, 5 % from M 5 000 up) as well, one level of refinement took 870 of the cold
     /// paper's first 1 284 solves to level 8 and left 370 of them above the film bound
     /// (the film converges at first order where the piezoviscous flank is not resolved,
