@@ -1,10 +1,11 @@
 //! The finest level's multigrid cycles: when they converge, stall or diverge, and the
 //! state they leave.
 
+use super::far_field::{FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use super::level::{self, LOAD};
 use super::multigrid::Hierarchy;
 use super::stopping::{self, Known};
-use super::{friction, Edge, Params, FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
+use super::{friction, Edge, Params};
 use crate::solver::output::{mean_change, Progress, Step};
 
 /// When a run of cycles counts as stalled (see [`Params::stall_cycles`],
@@ -262,3 +263,52 @@ pub(super) fn outputs_settled(before: &[f64; 3], after: &[f64; 3]) -> bool {
 /// 0.9 per round where the fit ring is slaved to the edge: M 20, L 30 at level 7 drifts
 /// 1e-5 per round) the drift left is below that tolerance.
 const FAR_FIELD_OUTPUTS_SETTLED: f64 = 5e-5;
+
+#[cfg(test)]
+mod tests {
+    use super::StallWindows;
+
+    const WINDOWS: StallWindows = StallWindows {
+        stall: 15,
+        early: 6,
+    };
+
+    #[test]
+    fn cycles_that_never_get_going_stall_at_the_early_cycle() {
+        // The first finest-level cycles of the 5P4E case (60 C, 3 GPa, 12 m/s, level 7): no
+        // cycle halves the first residual, nor the first pressure change (0.53 at best).
+        let residuals = [2.573e-2, 2.023e-2, 1.893e-2, 1.807e-2, 1.883e-2, 2.708e-2];
+        let changes = [1.483e-3, 1.038e-3, 9.278e-4, 7.883e-4, 9.454e-4, 1.108e-3];
+        assert!(!WINDOWS.stalled(&residuals[..5], &changes[..5]));
+        assert!(WINDOWS.stalled(&residuals, &changes));
+        // Off: they run on.
+        let off = StallWindows {
+            early: 0,
+            ..WINDOWS
+        };
+        assert!(!off.stalled(&residuals, &changes));
+    }
+
+    #[test]
+    fn cycles_that_halve_either_measure_early_run_on() {
+        // The heaviest converging case (mineral oil A, 60 C, 3 GPa, 2 m/s, level 7) halves
+        // its residual at the third cycle; one measure that halves is enough.
+        let residuals = [3.723e-2, 2.542e-2, 1.561e-2, 9.010e-3, 5.060e-3, 2.817e-3];
+        let flat = [1.0; 6];
+        assert!(!WINDOWS.stalled(&residuals, &flat));
+        assert!(!WINDOWS.stalled(&flat, &residuals));
+        // The early rule looks at the early cycle only, not at later ones.
+        let mut long = vec![1.0; 10];
+        long[2] = 0.4;
+        assert!(!WINDOWS.stalled(&long, &long));
+    }
+
+    #[test]
+    fn cycles_that_stop_converging_stall_after_the_window() {
+        // Halving for five cycles, then fifteen without a new half: stalled.
+        let mut residuals: Vec<f64> = (0..5).map(|i| 0.5f64.powi(i + 1)).collect();
+        residuals.extend(std::iter::repeat_n(0.03, 15));
+        assert!(WINDOWS.stalled(&residuals, &residuals));
+        assert!(!WINDOWS.stalled(&residuals[..19], &residuals[..19]));
+    }
+}

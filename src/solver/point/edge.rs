@@ -1,8 +1,8 @@
 //! The far field's self-consistency: the edge put anew for the converged film constant and
 //! the solve converged again until the edge settles.
 
-use super::cycles::{converge_by_cycles, stop_outputs, StallWindows};
-use super::finish::{finish, polish_and_finish, Work};
+use super::converge::{converge_level, How, Tally};
+use super::cycles::stop_outputs;
 use super::multigrid::Hierarchy;
 use super::stopping::{Known, WarmStop};
 use super::{Edge, Params};
@@ -17,17 +17,14 @@ use crate::solver::output::{Method, Progress, SolveError};
 /// that reached it: Fig. 6's 5P4E at 1 GPa, 7 m/s, S 0.5 %, tau0 4 MPa at level 5 gave a
 /// sliding `mu-bar` 0.8 % apart from a cold and from a warm start, both converged. Where
 /// there is no far field, or it is fitted to the solution, nothing is done. False where a
-/// reconvergence failed; the cycles and Newton work are counted.
-#[allow(clippy::too_many_arguments)]
+/// reconvergence failed; the cycles and Newton work are counted in `tally`, and
+/// `newton_used` says whether a round needed Newton-Krylov.
 pub(super) fn settle_edge(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
-    method: Method,
-    newton_used: &mut bool,
-    cycles: &mut usize,
-    history: &mut Vec<f64>,
-    work: &mut Work,
+    (method, newton_used): (Method, &mut bool),
+    tally: &mut Tally,
     observe: &mut dyn FnMut(&Progress),
 ) -> bool {
     if params.edge != Edge::FarField {
@@ -47,25 +44,11 @@ pub(super) fn settle_edge(
             finer: None,
         };
         mg.make_top(k);
-        if method == Method::Cycles {
-            let windows = StallWindows {
-                stall: params.stall_cycles,
-                early: 0,
-            };
-            let run = converge_by_cycles(mg, k, params, windows, &known, observe);
-            *cycles += run.history.len();
-            history.extend(&run.history);
-            if run.converged {
-                continue;
-            }
-            run.best.restore(mg, k);
-        }
-        *newton_used = true;
-        if params.newton_steps == 0
-            || !(work.add(&finish(mg, k, params, observe, history))
-                || polish_and_finish(mg, k, params, observe, history, work))
-        {
-            return false;
+        let how = How::as_by(method, params, &known);
+        match converge_level(mg, k, params, &how, tally, observe) {
+            Some(Method::Cycles) => {}
+            Some(_) => *newton_used = true,
+            None => return false,
         }
     }
     true
@@ -76,28 +59,14 @@ pub(super) fn settle_top(
     mg: &mut Hierarchy,
     params: &Params,
     (method, newton_used): (Method, &mut bool),
-    (cycles, history, work): (&mut usize, &mut Vec<f64>, &mut Work),
+    tally: &mut Tally,
     observe: &mut dyn FnMut(&Progress),
 ) -> Result<(), SolveError> {
     let k = mg.levels.len() - 1;
-    if settle_edge(
-        mg,
-        k,
-        params,
-        method,
-        newton_used,
-        cycles,
-        history,
-        work,
-        observe,
-    ) {
+    if settle_edge(mg, k, params, (method, newton_used), tally, observe) {
         Ok(())
     } else {
-        Err(SolveError::NotConverged {
-            cycles: *cycles,
-            tolerance: params.tolerance,
-            residual_history: history.clone(),
-        })
+        Err(tally.not_converged(params))
     }
 }
 

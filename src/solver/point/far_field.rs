@@ -30,6 +30,13 @@ use crate::physics::viscosity::Viscosity;
 use crate::solver::grid::{Domain, Grid};
 use std::sync::Arc;
 
+/// Most refits of a fitted far field ([`super::Edge::FittedFarField`]) per level, each followed by
+/// the cycles or a Newton-Krylov solve with the new edge.
+pub(super) const FAR_FIELD_ROUNDS: usize = 8;
+/// A fitted far field counts as settled when its fit moves the amplitude by less than this,
+/// relative ...
+pub(super) const FAR_FIELD_SETTLED: f64 = 1e-4;
+
 /// Points of the tabulated angular profile `g` on `[0, phi]`.
 const TABLE: usize = 512;
 /// RK4 steps on `[0, pi]` of the search for the cavitation angle.

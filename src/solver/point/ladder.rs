@@ -15,9 +15,9 @@
 //! the ladder ([`LadderStop`]); the estimate reads the levels above it: with two, the
 //! untrusted first-order bound, with one, none.
 
-use super::cycles::{converge_by_cycles, level_number, stop_outputs, StallWindows};
+use super::converge::{converge_level, How, Tally};
+use super::cycles::{level_number, stop_outputs};
 use super::edge::settle_edge;
-use super::finish::{finish, polish_and_finish, Work};
 use super::multigrid::Hierarchy;
 use super::stopping::{Known, WarmStop};
 use super::{Params, MIN_LEVEL};
@@ -80,7 +80,7 @@ const LADDER_COARSEST_SWEEPS: usize = 20;
 /// share of their distance to `finer`, the next finer level's outputs
 /// ([`super::stopping::Known::finer`]). Returns the residual it converged to, `None` where it
 /// failed.
-fn converge_level(
+fn converge_rung(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
@@ -107,47 +107,19 @@ fn converge_level(
         }),
         finer: Some(finer),
     };
-    let mut history = Vec::new();
-    let mut work = Work::default();
-    let mut converged = false;
-    if method == Method::Cycles {
-        let windows = StallWindows {
-            stall: params.stall_cycles,
-            early: 0,
-        };
-        let run = converge_by_cycles(mg, k, params, windows, &known, observe);
-        history = run.history;
-        converged = run.converged;
-        if !converged && run.non_finite.is_none() {
-            run.best.restore(mg, k);
-        }
-    }
-    let used = if converged {
-        Method::Cycles
-    } else {
-        if params.newton_steps == 0 {
-            return None;
-        }
-        let done = work.add(&finish(mg, k, params, observe, &mut history))
-            || polish_and_finish(mg, k, params, observe, &mut history, &mut work);
-        if !done {
-            return None;
-        }
-        Method::NewtonKrylov
-    };
-    let (mut cycles, mut newton_used) = (0, false);
-    settle_edge(
+    // Its tallies are not the solve's: the ladder reports its time, not its cycles.
+    let mut tally = Tally::default();
+    let used = converge_level(
         mg,
         k,
         params,
-        used,
-        &mut newton_used,
-        &mut cycles,
-        &mut history,
-        &mut work,
+        &How::as_by(method, params, &known),
+        &mut tally,
         observe,
-    )
-    .then(|| mg.residual_norm(k).0)
+    )?;
+    let mut newton_used = false;
+    settle_edge(mg, k, params, (used, &mut newton_used), &mut tally, observe)
+        .then(|| mg.residual_norm(k).0)
 }
 
 /// The outputs of the converged top level of `mg` and of up to `params.error_levels` coarser
@@ -184,7 +156,7 @@ pub(super) fn output_errors(
             Output::MuBarTotal,
         ]
         .map(|o| levels[0].get(o));
-        let Some(residual) = converge_level(mg, k, params, (method, finer), start, observe) else {
+        let Some(residual) = converge_rung(mg, k, params, (method, finer), start, observe) else {
             stopped = Some(LadderStop::NotConverged { level });
             break;
         };

@@ -3,10 +3,13 @@
 
 use super::far_field::FarField;
 use super::level::{Level, Model, LOAD};
+use super::nested::Surround;
 use super::relax::{relax, LineScratch};
 use super::transfer::{coarsen, correct, interpolate_solution};
-use super::Params;
+use super::{Edge, Params};
+use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
+use std::sync::Arc;
 
 /// Levels from coarsest (index 0) to finest, the global film constant `Delta` (`h0`), and
 /// the relaxation parameters.
@@ -32,6 +35,29 @@ pub(crate) struct Hierarchy {
 }
 
 impl Hierarchy {
+    /// A hierarchy for `problem` on `params`' levels and domain, the far field of its edge
+    /// (or the surroundings `surround` of a nested domain), and the film constant `h0`.
+    pub fn for_problem(
+        problem: &Problem,
+        params: &Params,
+        surround: Option<&Arc<Surround>>,
+        h0: f64,
+    ) -> Self {
+        let model = Model::new(problem);
+        let g = &problem.groups;
+        // Without the far field: its lambda-0 form, zero everywhere.
+        let far_lambda = if params.edge == Edge::Zero {
+            0.0
+        } else {
+            g.lambda
+        };
+        let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity)
+            .with_surround(surround.cloned());
+        let mut mg = Hierarchy::new(model, far, &params.domain, params, h0);
+        mg.rolling_scale = params.rolling_friction.then(|| g.rolling_stress_scale());
+        mg
+    }
+
     /// Builds every level from `params.coarsest_level` to `params.level` on `domain`.
     pub fn new(model: Model, far: FarField, domain: &Domain, params: &Params, h0: f64) -> Self {
         let levels = (params.coarsest_level..=params.level)
@@ -184,5 +210,10 @@ impl Hierarchy {
         let level = &mut self.levels[k];
         level.refresh(self.h0, &self.model);
         level.residual_norm()
+    }
+
+    /// Brings level `k`'s film and coefficients up to its pressure and the film constant.
+    pub fn refresh(&mut self, k: usize) {
+        self.levels[k].refresh(self.h0, &self.model);
     }
 }

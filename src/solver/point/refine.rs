@@ -6,8 +6,7 @@
 //! (Newton-Krylov alone takes 7 steps of 4-5 s each at level 8 on the heaviest cases; the
 //! cycles converge in about 20 of 0.2 s.)
 
-use super::cycles::{converge_by_cycles, StallWindows, State};
-use super::finish::{finish, Work};
+use super::converge::{converge_level, How, Tally};
 use super::multigrid::Hierarchy;
 use super::stopping::Known;
 use super::Params;
@@ -68,57 +67,30 @@ impl AccuracyTarget {
     }
 }
 
-/// The running tallies of a solve: cycles, residuals, Newton-Krylov work.
-pub(super) struct Tally<'a> {
-    pub cycles: &'a mut usize,
-    pub history: &'a mut Vec<f64>,
-    pub work: &'a mut Work,
-}
-
-/// Adds a finer level to the converged `mg` and converges it (module documentation); returns
-/// how it converged.
+/// Adds a finer level to the converged `mg` and converges it (module documentation) the way
+/// the level below converged (`method`); returns how it converged.
 pub(super) fn refine(
     mg: &mut Hierarchy,
     params: &Params,
     method: Method,
-    tally: Tally,
+    tally: &mut Tally,
     observe: &mut dyn FnMut(&Progress),
 ) -> Result<Method, SolveError> {
     let k = mg.add_finer_level(&params.domain);
     mg.make_top(k);
     mg.interpolate(k);
-    if method == Method::Cycles {
-        let start = State::of(mg, k);
-        let (start_residual, _) = mg.residual_norm(k);
-        // A refined level starts from a converged solution: no early rule there (its
-        // cycles may start slowly, and Newton-Krylov costs 4 s a step at level 8).
-        let windows = StallWindows {
-            stall: params.stall_cycles,
-            early: 0,
-        };
-        let run = converge_by_cycles(mg, k, params, windows, &Known::default(), observe);
-        *tally.cycles += run.history.len();
-        tally.history.extend(&run.history);
-        if run.converged {
-            return Ok(Method::Cycles);
-        }
-        if run.best_residual < start_residual {
-            run.best.restore(mg, k);
-        } else {
-            start.restore(mg, k);
-        }
-    }
-    if !tally
-        .work
-        .add(&finish(mg, k, params, observe, tally.history))
-    {
-        return Err(SolveError::NotConverged {
-            cycles: *tally.cycles,
-            tolerance: params.tolerance,
-            residual_history: tally.history.clone(),
-        });
-    }
-    Ok(Method::NewtonKrylov)
+    // A refined level starts from a converged solution: no early rule there (its cycles may
+    // start slowly, and Newton-Krylov costs 4 s a step at level 8).
+    let known = Known::default();
+    converge_level(
+        mg,
+        k,
+        params,
+        &How::as_by(method, params, &known),
+        tally,
+        observe,
+    )
+    .ok_or_else(|| tally.not_converged(params))
 }
 
 #[cfg(test)]

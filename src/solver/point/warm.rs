@@ -17,11 +17,11 @@
 //! where it no longer falls ([`super::stopping::WarmStop`]: a warm start begins near its fixed point; without it the
 //! heaviest members, M 11 070, took a Newton-Krylov detour and were slower than cold).
 
-use super::cycles::{converge_by_cycles, stop_outputs, StallWindows, State};
-use super::finish::{finish, polish_and_finish, Work};
+use super::converge::{converge_level, How, Tally};
+use super::cycles::stop_outputs;
 use super::nested::Surround;
 use super::stopping::{Known, WarmStop};
-use super::{hierarchy, Converged, Hierarchy, Params, MAX_LEVEL};
+use super::{Converged, Hierarchy, Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{Method, Progress, StartKind};
@@ -96,15 +96,15 @@ pub(super) fn converge(
     observe: &mut dyn FnMut(&Progress),
     tried: &mut Vec<f64>,
 ) -> Option<(Hierarchy, Converged)> {
-    let mut mg = hierarchy(problem, params, surround, start.delta);
+    let mut mg = Hierarchy::for_problem(problem, params, surround, start.delta);
     mg.warm = true;
     let top = mg.levels.len() - 1;
     // The pressure first, then the edge: the far field is put on the boundary for the
     // start's `Delta`.
     mg.levels[top].p.copy_from_slice(&start.p);
     mg.make_top(top);
-    let (start_residual, _) = mg.residual_norm(top);
-    let at_start = State::of(&mg, top);
+    // Its outputs are read from the film of the start's pressure.
+    mg.refresh(top);
     let known = Known {
         start: Some(WarmStop {
             outputs: stop_outputs(&mg, top, params),
@@ -112,51 +112,17 @@ pub(super) fn converge(
         }),
         finer: None,
     };
-    let mut history = Vec::new();
-    let mut work = Work::default();
-    let mut cycles = 0;
-    if start.method == Method::Cycles {
-        // No early-stall rule: a warm start's residual need not halve (as on a refined level).
-        let windows = StallWindows {
-            stall: params.stall_cycles,
-            early: 0,
-        };
-        let run = converge_by_cycles(&mut mg, top, params, windows, &known, observe);
-        cycles = run.history.len();
-        history.extend(&run.history);
-        if run.converged {
-            return Some((
-                mg,
-                Converged {
-                    cycles,
-                    history,
-                    method: Method::Cycles,
-                    work,
-                    start: StartKind::Warm,
-                    coarser: Vec::new(),
-                },
-            ));
-        }
-        if run.non_finite.is_none() && run.best_residual < start_residual {
-            run.best.restore(&mut mg, top);
-        } else {
-            at_start.restore(&mut mg, top);
-        }
-    }
-    let converged = params.newton_steps > 0
-        && (work.add(&finish(&mut mg, top, params, observe, &mut history))
-            || polish_and_finish(&mut mg, top, params, observe, &mut history, &mut work));
-    if !converged {
-        tried.extend(history);
+    let mut tally = Tally::default();
+    let how = How::as_by(start.method, params, &known);
+    let Some(method) = converge_level(&mut mg, top, params, &how, &mut tally, observe) else {
+        tried.extend(tally.history);
         return None;
-    }
+    };
     Some((
         mg,
         Converged {
-            cycles,
-            history,
-            method: Method::NewtonKrylov,
-            work,
+            tally,
+            method,
             start: StartKind::Warm,
             coarser: Vec::new(),
         },

@@ -1,0 +1,57 @@
+//! The cold solve's way out where its finest level's cycles fail: the Newton-Krylov finish
+//! grid-sequenced from a coarser level's full-multigrid state.
+
+use super::converge::{converge_level, How, Tally};
+use super::cycles::{StallWindows, State};
+use super::multigrid::Hierarchy;
+use super::stopping::Known;
+use super::Params;
+use crate::solver::output::Progress;
+
+/// The Newton-Krylov finish, grid-sequenced: level `newton_start_level` converged from
+/// its state in `starts` (its cycles, then Newton where they stall), then Newton on each
+/// finer level from the interpolated solution of the one below ([`converge_level`]), counted
+/// in `tally`. Whether the finest level converged.
+pub(super) fn grid_sequence(
+    mg: &mut Hierarchy,
+    starts: &[State],
+    params: &Params,
+    observe: &mut dyn FnMut(&Progress),
+    tally: &mut Tally,
+) -> bool {
+    let top = mg.levels.len() - 1;
+    let first = (params
+        .newton_start_level
+        .clamp(params.coarsest_level, params.level)
+        - params.coarsest_level) as usize;
+    // The saved state first, then its level made the top: the far-field edge follows the
+    // restored film constant.
+    starts[first].restore(mg, first);
+    mg.make_top(first);
+    let known = Known::default();
+    // Its own tallies: the solve counts the cycles of its finest level's first try.
+    let mut sequence = Tally::default();
+    let mut converged = true;
+    for k in first..=top {
+        if k > first {
+            mg.make_top(k);
+            mg.interpolate(k);
+        }
+        let how = How {
+            cycles: k == first && first < top,
+            windows: StallWindows {
+                stall: params.sequence_stall_cycles,
+                early: params.early_stall_cycles,
+            },
+            known: &known,
+        };
+        if converge_level(mg, k, params, &how, &mut sequence, observe).is_none() {
+            converged = false;
+            break;
+        }
+    }
+    tally.history.extend(&sequence.history);
+    tally.work.newton_steps += sequence.work.newton_steps;
+    tally.work.krylov_iterations += sequence.work.krylov_iterations;
+    converged
+}
