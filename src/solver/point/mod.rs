@@ -41,7 +41,7 @@ use cycles::{converge_by_cycles, cycle_progress, level_number, StallWindows, Sta
 use edge::settle_top;
 use far_field::FarField;
 use finish::{finish, grid_sequence, Work};
-pub use friction::{FrictionRegion, LOADED_FILM_FACTOR};
+pub use friction::{mean_shear_stress, FrictionRegion, LOADED_FILM_FACTOR};
 pub use ladder::CoarseSolution;
 use level::Model;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
