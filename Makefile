@@ -19,12 +19,13 @@ test:
 	$(MAKE) python-test
 
 # The Python package (python/, `import repro`): maturin builds the abi3 wheel into the
-# virtual environment $(VENV) (created with maturin, numpy, pytest and matplotlib, for the
-# README's example, from PyPI on first use).
+# virtual environment $(VENV) (created with maturin, numpy, pytest, matplotlib for the
+# README's example and pandas for repro.study's DataFrame, from PyPI on first use; pandas
+# adds some 15 s to the 90 s of the others, measured once on this machine).
 $(VENV)/bin/maturin:
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q --upgrade pip
-	$(VENV)/bin/pip install -q "maturin>=1.5,<2" numpy pytest matplotlib
+	$(VENV)/bin/pip install -q "maturin>=1.5,<2" numpy pytest matplotlib pandas
 
 python: $(VENV)/bin/maturin
 	cd python && VIRTUAL_ENV=$(CURDIR)/$(VENV) $(CURDIR)/$(VENV)/bin/maturin develop --release -q

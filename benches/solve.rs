@@ -136,6 +136,7 @@ fn target(c: &mut Criterion) {
         warn: &warn,
         stride: 1,
         offline: false,
+        stop: None,
     };
     let mut group = c.benchmark_group("target");
     group.sample_size(10);

@@ -5,8 +5,8 @@ mastercurve, called from Python with the bits of the command line:
 
 - :func:`solve` -- one elliptical (point) or line contact, as ``repro solve``: film thickness,
   reduced friction mu-bar, the characteristic shear stress tau_c (Eq. 12), the mastercurve
-  Eq. (13), the thermal correction, discretisation error estimates, and the pressure and film
-  fields as numpy arrays.
+  Eq. (13), the thermal correction, discretisation error estimates, and the pressure, film
+  and mean shear stress fields as numpy arrays.
 - :func:`predict` -- the mastercurve predictor of ``repro predict`` (Eq. 14,
   mu-bar = asinh(tau_c / 5)) over numpy arrays, microseconds per contact.
 - :func:`lubricant` -- a lubricant's eta0 and alpha (Table 1, given, or a datasheet).
@@ -53,7 +53,13 @@ class Solution:
     arrays indexed ``[j, i]`` (Y rows, X columns) of the dimensionless coordinates
     ``X = x/a``, ``Y = y/b``, pressure ``P = p/p_H`` and film ``H = h/c`` (ready for
     ``matplotlib.pyplot.contourf(s.X, s.Y, s.P)``); for a line contact ``X``, ``P``, ``H``
-    are 1-D and ``Y`` is None.
+    are 1-D and ``Y`` is None. ``tau_m`` is the mean shear stress tau_m / tau0 on the same
+    grid, the integrand of Eq. (8) (Eq. 4 for Eyring at the Couette argument
+    N S eta_bar(P) / H): its sum over the pressurised interior nodes of the loaded film
+    (H <= 4 h_central) times ``hx * hy / (2 pi / 3)`` is ``mu_bar_sliding`` (a line
+    contact's: over the interior nodes with P > 0, divided by their sum of P). It is 0 where
+    P <= 0, as Eq. (8) counts it: the cavitation condition does not say how much of the
+    ruptured gap there is lubricant.
     """
 
     def __init__(self, raw: Dict[str, Any]):
@@ -65,6 +71,7 @@ class Solution:
         self.Y: Optional[np.ndarray] = raw.get("Y")
         self.P: np.ndarray = raw["P"]
         self.H: np.ndarray = raw["H"]
+        self.tau_m: np.ndarray = raw["tau_m"]
         self.hx: Optional[float] = raw.get("hx")
         self.hy: Optional[float] = raw.get("hy")
         # Wall time of the library's solve and report inside the call (the rest is the
@@ -199,8 +206,11 @@ def study(
     DataFrame when pandas is installed, else a list of dicts of strings as the CSV has them.
 
     ``cache=None`` solves every case afresh. ``out`` keeps the CSV and SVG (default: a
-    temporary folder). ``progress(done, total)`` hears of finished cases. Ctrl-C stops the
-    study after the cases in flight, which stay in the cache; KeyboardInterrupt is raised.
+    temporary folder). ``progress(done, total)`` hears of each case once it is in the cache
+    (from the thread that solved it, holding the GIL). Ctrl-C, or an exception from
+    ``progress``, stops the study: the cases in flight finish into the cache, no new one
+    starts, and KeyboardInterrupt (or the callback's exception) is raised; the next call
+    takes the solved cases from the cache.
     """
     if isinstance(path_or_dict, Mapping):
         # The sweep's format is TOML: a dict goes through JSON to the same parser as a file.

@@ -40,6 +40,9 @@ class Solution:
     """Dimensionless pressure P = p/p_H on the grid of X (and Y)."""
     H: np.ndarray
     """Dimensionless film H = h/c (point contact; h Rx / a^2 for a line contact)."""
+    tau_m: np.ndarray
+    """Mean shear stress tau_m / tau0 (dimensionless), Eq. (8)'s integrand (Eq. 4 for Eyring),
+    on the grid of P; 0 where P <= 0 (cavitated: the fill of the gap is unknown)."""
     hx: Optional[float]
     """Mesh size in X of the point contact's (innermost) grid."""
     hy: Optional[float]

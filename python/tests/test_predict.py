@@ -73,3 +73,27 @@ def test_table1_lubricant_and_errors():
     with pytest.raises(ValueError, match="^rho15"):
         repro.predict(um=1.0, temperature=60.0, iso_vg=100, vi=95, base_oil="mineral",
                       **CONTACT)
+
+
+# The lubricant and geometry keywords are read by one piece of code for solve, predict and
+# lubricant (python/src/args.rs): each refuses what none of its groups takes, as Python does.
+@pytest.mark.parametrize("call", [
+    repro.solve,
+    repro.lubricant,
+    lambda **k: repro.predict(um=1.0, temperature=60.0, **CONTACT, **OIL, **k),
+], ids=["solve", "lubricant", "predict"])
+def test_unknown_or_mistyped_keyword_raises_type_error(call):
+    with pytest.raises(TypeError, match="unexpected keyword argument 'nu_40'"):
+        call(nu_40=100.0)
+    with pytest.raises(TypeError, match="^argument 'expansion15': "):
+        call(expansion15="heavy")
+
+
+def test_geometry_keywords_reach_the_predictor():
+    base = repro.predict(um=1.0, temperature=60.0, **CONTACT, **OIL)
+    # The default Rx is the command line's (1.03875e-2 m): given, the same bits.
+    same = repro.predict(um=1.0, temperature=60.0, rx=1.03875e-2, **CONTACT, **OIL)
+    assert same["m"].item() == base["m"].item()
+    # A larger ball at the same p_H carries more load in a larger contact: another M.
+    other = repro.predict(um=1.0, temperature=60.0, rx=2e-2, ry=3e-2, **CONTACT, **OIL)
+    assert other["m"].item() != base["m"].item()

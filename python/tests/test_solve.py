@@ -89,8 +89,45 @@ def test_point_fields_have_the_grid_shape_and_carry_the_load():
 def test_line_fields_are_one_dimensional():
     s = repro.solve(**LINE)
     assert s.kind == "line" and s.Y is None
-    assert s.X.ndim == s.P.ndim == s.H.ndim == 1 and s.X.shape == s.P.shape == s.H.shape
+    assert s.X.ndim == s.P.ndim == s.H.ndim == s.tau_m.ndim == 1
+    assert s.X.shape == s.P.shape == s.H.shape == s.tau_m.shape
     assert s.P.max() > 0.5 and np.all(s.H > 0)
+
+
+# The friction sums tau_m over at most 129^2 (point) or 513 (line) positive terms in an
+# order numpy does not share: each summation's relative rounding error is below
+# (terms - 1) * 2^-53 < 2e-12 for the point contact and 6e-14 for the line; 4e-12 covers
+# both sums and the division. A wrong region, load or formula moves mu-bar by percents.
+SUM_ROUNDING = 4e-12
+
+
+@pytest.mark.parametrize("inputs", [dict(m=20, l=10, s_bar=0.5, level=6), TABLE4],
+                         ids=["moes", "table4"])
+def test_mean_shear_stress_sums_to_the_sliding_friction(inputs):
+    s = repro.solve(**inputs)
+    assert "nested" not in s.as_dict()  # nested domains add friction outside the grid
+    assert s.tau_m.shape == s.P.shape
+    # Eq. (8) as friction.rs has it: the interior nodes of the loaded film, P > 0 and
+    # H <= 4 H_c, over the applied load 2 pi / 3 in units of the cell hx * hy.
+    inner = (slice(1, -1), slice(1, -1))
+    p, h, tau = s.P[inner], s.H[inner], s.tau_m[inner]
+    loaded = (p > 0) & (h <= 4.0 * s.h_central)
+    mu = tau[loaded].sum() / (2 * math.pi / 3 / (s.hx * s.hy))
+    assert abs(mu / s.mu_bar_sliding - 1) <= SUM_ROUNDING
+    # 0 where cavitated, an Eyring stress asinh(x) > 0 wherever pressurised.
+    assert np.all(s.tau_m[s.P <= 0] == 0) and np.all(s.tau_m[s.P > 0] > 0)
+    # The largest stress is in the Hertzian contact, X^2 + Y^2 < 1.
+    j, i = np.unravel_index(np.argmax(s.tau_m), s.tau_m.shape)
+    assert s.X[j, i] ** 2 + s.Y[j, i] ** 2 < 1
+
+
+def test_line_mean_shear_stress_sums_to_the_sliding_friction():
+    s = repro.solve(**LINE)
+    # The line contact's Eq. (8): interior nodes with P > 0, over their sum of P.
+    p, tau = s.P[1:-1], s.tau_m[1:-1]
+    mu = tau[p > 0].sum() / p[p > 0].sum()
+    assert abs(mu / s.mu_bar_sliding - 1) <= SUM_ROUNDING
+    assert np.all(s.tau_m[s.P <= 0] == 0) and np.all(s.tau_m[s.P > 0] > 0)
 
 
 @pytest.mark.parametrize(

@@ -137,5 +137,6 @@ pub fn context<'a>(
         warn,
         stride: 1,
         offline: args.offline,
+        stop: None,
     })
 }

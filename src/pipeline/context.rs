@@ -6,6 +6,7 @@ use crate::pipeline::csv::write_atomic;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{CachePolicy, RunProgress};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
 
 /// Where and how targets are built.
 #[derive(Clone)]
@@ -25,6 +26,10 @@ pub struct Context<'a> {
     pub stride: usize,
     /// Assemble from the cache alone (`--offline`): a case without an entry is an error.
     pub offline: bool,
+    /// Set (by a Ctrl-C handler): the sweeps start no new solve and end in
+    /// [`PipelineError::Interrupted`] once the solves in flight are in the cache
+    /// ([`crate::pipeline::executor::run_jobs_until`]). `None`: runs go to their end.
+    pub stop: Option<&'a AtomicBool>,
 }
 
 /// Sweeps with more cases than this are sampled when [`Context::stride`] is above 1.

@@ -69,6 +69,15 @@ pub enum PipelineError {
     /// message lists them with their targets and keys.
     #[error("{0}")]
     Offline(String),
+    /// A run stopped before every job was done ([`super::executor::run_jobs_until`]): the
+    /// solves it finished are in the cache.
+    #[error("{target}: interrupted with {unsolved} cases not solved")]
+    Interrupted {
+        /// The run's target.
+        target: String,
+        /// Its jobs left unsolved.
+        unsolved: usize,
+    },
     /// A target name that is not in the registry.
     #[error("unknown target '{name}' (known: {known})")]
     UnknownTarget {

@@ -11,7 +11,7 @@ use crate::pipeline::error::PipelineError;
 use crate::solver::point::{self, Start};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// How a run uses the result cache.
@@ -76,6 +76,21 @@ pub fn run_jobs(
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
+) -> Result<Vec<FinishedJob>, PipelineError> {
+    run_jobs_until(target, jobs, policy, progress, warn, None)
+}
+
+/// [`run_jobs`] that starts no new solve once `stop` is set (by a Ctrl-C handler, from any
+/// thread): the solves in flight finish, each into the cache as always, and unless every
+/// job was done by then the run ends in [`PipelineError::Interrupted`]. A run that takes up
+/// the same jobs again finds those in the cache. `None`: the run goes to its end.
+pub fn run_jobs_until(
+    target: &str,
+    jobs: &[Job],
+    policy: CachePolicy,
+    progress: &(dyn Fn(RunProgress) + Sync),
+    warn: &(dyn Fn(String) + Sync),
+    stop: Option<&AtomicBool>,
 ) -> Result<Vec<FinishedJob>, PipelineError> {
     if let CachePolicy::Offline(cache) = policy {
         let absent = missing(jobs, cache);
@@ -163,6 +178,7 @@ pub fn run_jobs(
         policy,
         warn,
         progress,
+        stop,
         results: Mutex::new(HashMap::new()),
         done: AtomicUsize::new(cached),
         total: nodes.len() + cached,
@@ -182,13 +198,22 @@ pub fn run_jobs(
         .results
         .into_inner()
         .unwrap_or_else(|e| e.into_inner());
+    // Every missing job is a node of the forest: only a stop leaves one unsolved.
+    let unsolved = jobs
+        .iter()
+        .zip(&looked)
+        .filter(|(job, d)| d.is_none() && !solved.contains_key(job.key.as_str()))
+        .count();
+    if unsolved > 0 {
+        return Err(PipelineError::Interrupted {
+            target: target.to_string(),
+            unsolved,
+        });
+    }
     Ok(jobs
         .iter()
         .zip(looked)
-        .map(|(job, d)| {
-            d.or_else(|| solved.get(job.key.as_str()).cloned())
-                .expect("every missing job is a node of the forest, solved above")
-        })
+        .filter_map(|(job, d)| d.or_else(|| solved.get(job.key.as_str()).cloned()))
         .collect())
 }
 
@@ -201,6 +226,8 @@ struct Forest<'a, 'j> {
     policy: CachePolicy<'a>,
     warn: &'a (dyn Fn(String) + Sync),
     progress: &'a (dyn Fn(RunProgress) + Sync),
+    /// Set: start no new solve ([`run_jobs_until`]).
+    stop: Option<&'a AtomicBool>,
     results: Mutex<HashMap<&'j str, FinishedJob>>,
     done: AtomicUsize,
     total: usize,
@@ -219,8 +246,11 @@ impl<'j> Forest<'_, 'j> {
     }
 
     /// Solves `key` from `start`, then its children from its solution (cold where it
-    /// failed).
+    /// failed); nothing once the run is stopped.
     fn run(&self, key: &'j str, start: Option<Arc<Start>>) {
+        if self.stop.is_some_and(|s| s.load(Ordering::SeqCst)) {
+            return;
+        }
         let job = self.nodes[key];
         let clock = std::time::Instant::now();
         let (outcome, solution) = job.solve.run(start.as_deref(), true);
@@ -295,20 +325,29 @@ pub fn run_cases(
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
 ) -> Result<Vec<PointRun>, PipelineError> {
-    run_cases_in(target, (cases, level, Setup::Rule), policy, progress, warn)
+    run_cases_in(
+        target,
+        (cases, level, Setup::Rule),
+        policy,
+        progress,
+        warn,
+        None,
+    )
 }
 
-/// [`run_cases`] for `cases` at `level` in `setup` ([`Setup`]).
+/// [`run_cases`] for `cases` at `level` in `setup` ([`Setup`]), stopped as `stop` says
+/// ([`run_jobs_until`]).
 pub fn run_cases_in(
     target: &str,
     (cases, level, setup): (&[Case], u32, Setup),
     policy: CachePolicy,
     progress: &(dyn Fn(RunProgress) + Sync),
     warn: &(dyn Fn(String) + Sync),
+    stop: Option<&AtomicBool>,
 ) -> Result<Vec<PointRun>, PipelineError> {
     let planned = point_jobs_in(cases, level, setup)?;
     let jobs: Vec<Job> = planned.iter().map(|p| p.job.clone()).collect();
-    let finished = run_jobs(target, &jobs, policy, progress, warn)?;
+    let finished = run_jobs_until(target, &jobs, policy, progress, warn, stop)?;
     Ok(cases
         .iter()
         .zip(planned)
@@ -323,4 +362,41 @@ pub fn run_cases_in(
             stamp: f.stamp,
         })
         .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::case::tests::worked_case;
+    use crate::pipeline::job::point_jobs;
+
+    /// A run whose stop flag is set before it starts solves nothing (no progress report),
+    /// and says how many of its own jobs it left (the base the case needs is not one).
+    #[test]
+    fn a_stopped_run_starts_no_solve() {
+        let jobs: Vec<Job> = point_jobs(&[worked_case()], 3)
+            .expect("a valid case")
+            .into_iter()
+            .map(|p| p.job)
+            .collect();
+        assert!(jobs[0].base.is_some());
+        let reports = AtomicUsize::new(0);
+        let progress = |_: RunProgress| {
+            reports.fetch_add(1, Ordering::SeqCst);
+        };
+        let stop = AtomicBool::new(true);
+        let run = run_jobs_until(
+            "t",
+            &jobs,
+            CachePolicy::Ignore,
+            &progress,
+            &|_| {},
+            Some(&stop),
+        );
+        assert!(matches!(
+            run,
+            Err(PipelineError::Interrupted { unsolved: 1, .. })
+        ));
+        assert_eq!(reports.load(Ordering::SeqCst), 0);
+    }
 }

@@ -115,6 +115,7 @@ pub fn sweep_figure(
             ctx.cache_policy(),
             &progress,
             ctx.warn,
+            ctx.stop,
         )?;
         files.push(ctx.write(&format!("{stem}-paper-setup.csv"), &rows::csv(&paper, plot))?);
         let (series, shown) = paper_setup_series(&runs, &paper, plot);

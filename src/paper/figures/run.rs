@@ -6,8 +6,8 @@ use crate::paper::artefact::WORKING_LEVEL;
 use crate::physics::case::Case;
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
-use crate::pipeline::executor::{run_cases, PointRun, RunProgress};
-use crate::pipeline::job::{point_jobs, Job};
+use crate::pipeline::executor::{run_cases_in, PointRun, RunProgress};
+use crate::pipeline::job::{point_jobs, Job, Setup};
 use crate::pipeline::sweep::Sweep;
 
 /// The cases of a sweep that a context runs (a sample of the large sweeps at the snapshot
@@ -37,13 +37,13 @@ pub fn run_sweep(
 ) -> Result<(Vec<PointRun>, u32), PipelineError> {
     let (cases, level) = selection(sweep, default_level, ctx);
     let progress = |p: RunProgress| (ctx.progress)(label, p);
-    let runs = run_cases(
+    let runs = run_cases_in(
         label,
-        &cases,
-        level,
+        (&cases, level, Setup::Rule),
         ctx.cache_policy(),
         &progress,
         ctx.warn,
+        ctx.stop,
     )?;
     Ok((runs, level))
 }

@@ -161,6 +161,9 @@ pub struct LineSolution {
     pub film: Film,
     /// Reduced friction `mu-bar = mu p_H / tau0`.
     pub friction: Friction,
+    /// The mean shear stress `tau_m / tau0` at the nodes (Eq. 8's integrand; 0 where
+    /// `P <= 0`: [`friction::mean_shear_stress`]).
+    pub tau_m: Vec<f64>,
     /// Convergence information.
     pub info: Info,
     /// The outputs' discretisation error, from the finest level and the two below it, which
@@ -323,6 +326,7 @@ pub fn solve(
         h0,
         film,
         friction,
+        tau_m: friction::mean_shear_stress(fine, &model),
         info: Info {
             level: params.level,
             method: Method::Newton,

@@ -1,6 +1,8 @@
 //! Film thickness and reduced friction, Eq. (8), from a converged point-contact solution.
 
 use super::level::{Level, Model, LOAD};
+use super::PointSolution;
+use crate::physics::case::Problem;
 use crate::physics::evaluations::{record, Effect};
 use crate::solver::output::{Film, Friction};
 
@@ -60,9 +62,7 @@ pub(crate) fn friction(
             if h > h_limit {
                 continue;
             }
-            sliding += model
-                .rheology
-                .mean_shear_stress(model.n_s * model.eta(p) / h, p);
+            sliding += model.mean_shear_stress(p, h);
             if rolling_scale.is_some() {
                 rolling += h * (level.p[k + 1] - level.p[k - 1]) / (2.0 * g.hx);
             }
@@ -77,4 +77,32 @@ pub(crate) fn friction(
         sliding: sliding / load,
         rolling: rolling_scale.map(|s| s * rolling / load),
     }
+}
+
+/// The mean shear stress field `tau_m / tau0` of `solution` (a solution of `problem`), at the
+/// nodes of its grid in the order of `p` and `h`: at every pressurised node the stress Eq. (8)
+/// integrates ([`Model::mean_shear_stress`]: Eq. 4 at the Couette argument
+/// `N S eta_bar(P) / H`), inside [`friction`]'s region or not. Summed over that region (the
+/// interior nodes; with [`FrictionRegion::LoadedFilm`] those with `H <= 4 Hc`) and divided
+/// by its load it is the solution's sliding `mu-bar`; on nested domains the reported
+/// friction adds the surroundings' stress outside this grid ([`super::chain`]).
+///
+/// Where `P <= 0` (the cavitated outlet and the domain's edge) it is 0, as Eq. (8) counts it:
+/// the solver's cavitation condition (`P = 0`, no film content) does not know what fraction
+/// of the ruptured gap is lubricant, so the Couette stress of a full gap would be a number
+/// the model cannot back, and 0 keeps the field's integral the friction the solver reports.
+pub fn mean_shear_stress(problem: &Problem, solution: &PointSolution) -> Vec<f64> {
+    let model = Model::new(problem);
+    solution
+        .p
+        .iter()
+        .zip(&solution.h)
+        .map(|(&p, &h)| {
+            if p <= 0.0 {
+                0.0
+            } else {
+                model.mean_shear_stress(p, h)
+            }
+        })
+        .collect()
 }

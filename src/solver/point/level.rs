@@ -61,6 +61,16 @@ impl Model {
         self.viscosity.ln_eta_bar(p).min(LN_ETA_MAX).exp()
     }
 
+    /// The mean shear stress `tau_m / tau0` at a node of pressure `p > 0` and film `h`: the
+    /// case's shear law (Eq. 4 for Eyring) at the Couette argument `N S eta_bar(P) / H`. The
+    /// one formula of the friction (Eq. 8) and of the stress field
+    /// ([`super::friction::mean_shear_stress`]).
+    #[inline]
+    pub fn mean_shear_stress(&self, p: f64, h: f64) -> f64 {
+        self.rheology
+            .mean_shear_stress(self.n_s * self.eta(p) / h, p)
+    }
+
     /// The coefficients of Eq. (1) at one node of pressure `p` and film `h`:
     /// `(rho H^3 / (eta_x lambda), kappa^2 rho H^3 / (eta_y lambda), rho)`.
     #[inline]

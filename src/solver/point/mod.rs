@@ -43,7 +43,7 @@ use crate::solver::output::{
 use converge::Tally;
 use cycles::level_number;
 use edge::settle_top;
-pub use friction::{FrictionRegion, LOADED_FILM_FACTOR};
+pub use friction::{mean_shear_stress, FrictionRegion, LOADED_FILM_FACTOR};
 pub use ladder::CoarseSolution;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
 pub(crate) use level::LOAD;

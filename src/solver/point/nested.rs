@@ -8,6 +8,7 @@
 //! solution's cells between inside and outside is exact up to the half cell along the edge,
 //! which the nested grid's own boundary nodes cover ([`Surround::new`]).
 
+use super::level::Model;
 use crate::physics::case::Problem;
 use crate::physics::hertz::DIMENSIONLESS_LOAD as LOAD;
 use crate::solver::deformation::Deformation;
@@ -179,7 +180,7 @@ impl Surround {
         h_limit: f64,
         rolling: bool,
     ) -> (f64, Option<f64>) {
-        let n_s = problem.eyring_n_s();
+        let model = Model::new(problem);
         let g = &self.wide;
         let (mut sliding, mut poiseuille) = (0.0, 0.0);
         for j in 1..g.ny {
@@ -189,10 +190,7 @@ impl Surround {
                 if p <= 0.0 || h > h_limit || self.cover_share[k] == 0.0 {
                     continue;
                 }
-                sliding += self.cover_share[k]
-                    * problem
-                        .shear
-                        .mean_shear_stress(n_s * problem.viscosity.eta_bar(p) / h, p);
+                sliding += self.cover_share[k] * model.mean_shear_stress(p, h);
                 poiseuille +=
                     self.cover_share[k] * h * (self.p[k + 1] - self.p[k - 1]) / (2.0 * g.hx);
             }
