@@ -23,6 +23,7 @@ mod friction;
 mod jacobian;
 mod ladder;
 mod level;
+mod model;
 mod multigrid;
 pub mod nested;
 mod newton;

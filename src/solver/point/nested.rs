@@ -8,7 +8,7 @@
 //! solution's cells between inside and outside is exact up to the half cell along the edge,
 //! which the nested grid's own boundary nodes cover ([`Surround::new`]).
 
-use super::level::Model;
+use super::model::Model;
 use crate::physics::case::Problem;
 use crate::physics::hertz::DIMENSIONLESS_LOAD as LOAD;
 use crate::solver::deformation::Deformation;
