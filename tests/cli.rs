@@ -263,3 +263,30 @@ fn the_line_contact_refuses_an_edge() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--edge"), "{err}");
 }
+
+/// Output into a pipe whose reader has gone (`repro list | head -1` once `head` has what it
+/// wants) ends the program by SIGPIPE, silently, as any Unix filter ends, not by a panic with
+/// a backtrace (exit 101, as before). The read end is closed before the program starts, so
+/// its first line of output meets a closed pipe every time.
+#[cfg(unix)]
+#[test]
+fn output_into_a_closed_pipe_ends_quietly() {
+    use std::os::unix::process::ExitStatusExt;
+    use std::process::{Command, Stdio};
+    let (reader, writer) = std::io::pipe().expect("a pipe");
+    drop(reader);
+    let out = Command::new(env!("CARGO_BIN_EXE_repro"))
+        .arg("list")
+        .stdout(writer)
+        .stderr(Stdio::piped())
+        .output()
+        .expect("repro runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(
+        out.status.signal(),
+        Some(libc::SIGPIPE),
+        "{:?}: {err}",
+        out.status
+    );
+    assert!(err.is_empty(), "nothing on stderr: {err}");
+}
