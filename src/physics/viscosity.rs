@@ -39,6 +39,10 @@ pub enum Viscosity {
     },
 }
 
+/// The cap on `ln(eta/eta0)` in [`Viscosity::eta_bar_capped`]; no converged EHL solution
+/// comes near it (it would need `alpha-bar P > 700`).
+pub const LN_ETA_BAR_MAX: f64 = 700.0;
+
 impl Viscosity {
     /// Barus with `alpha_bar = alpha p_H`.
     pub fn barus(alpha_bar: f64) -> Self {
@@ -83,6 +87,14 @@ impl Viscosity {
     /// `eta / eta0` at dimensionless pressure `p`.
     pub fn eta_bar(&self, p: f64) -> f64 {
         self.ln_eta_bar(p).exp()
+    }
+
+    /// `eta / eta0` as the discrete equations evaluate it (point and line contacts, and the
+    /// thermal post-process's Couette argument): `ln eta_bar` capped at [`LN_ETA_BAR_MAX`]
+    /// so that `exp` stays finite.
+    #[inline]
+    pub fn eta_bar_capped(&self, p: f64) -> f64 {
+        self.ln_eta_bar(p).min(LN_ETA_BAR_MAX).exp()
     }
 
     /// Which law this is.

@@ -31,8 +31,8 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
         base_key,
     );
     // The edge and the friction's region, where they are not the rule's (the paper's setup
-    // beside Fig. 6), and an accuracy target, where one is set: the rule's keys stay as they
-    // were.
+    // beside Fig. 6), and the accuracy target, where one is set (the rule's, and an
+    // expert's): a key without either is a solve to its level as given.
     let rule =
         params.edge == Edge::FarField && params.friction_region == FrictionRegion::LoadedFilm;
     match (rule, params.accuracy) {

@@ -12,10 +12,6 @@ use crate::solver::grid::{Domain, Grid};
 use crate::solver::point::{FrictionRegion, PointSolution, LOAD, LOADED_FILM_FACTOR};
 use serde::{Deserialize, Serialize};
 
-/// The isothermal solvers' cap on `ln eta_bar` (`solver::point::level`): the Couette argument
-/// is evaluated as the friction does.
-const LN_ETA_MAX: f64 = 700.0;
-
 /// The thermal correction of one solve with one set of thermal inputs.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Thermal {
@@ -173,7 +169,7 @@ pub fn fields_thermal(
             let x_iso: Vec<f64> = (0..nodes)
                 .map(|i| {
                     if loaded[i] {
-                        let eta = problem.viscosity.ln_eta_bar(p[i]).min(LN_ETA_MAX).exp();
+                        let eta = problem.viscosity.eta_bar_capped(p[i]);
                         n_s * eta / h[i]
                     } else {
                         0.0

@@ -14,10 +14,6 @@ use crate::physics::line_contact::{LineEyringFlow, LineProblem};
 use crate::physics::rheology::ShearLaw;
 use crate::physics::viscosity::Viscosity;
 
-/// `ln(eta/eta0)` is capped here so that `exp` stays finite; no converged EHL solution comes
-/// near it (it would need `alpha-bar P > 700`).
-const LN_ETA_MAX: f64 = 700.0;
-
 /// The parts of the dimensionless problem the discrete equations use.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Model {
@@ -50,7 +46,7 @@ impl Model {
     /// `eta_bar(P)`.
     #[inline]
     pub fn eta(&self, p: f64) -> f64 {
-        self.viscosity.ln_eta_bar(p).min(LN_ETA_MAX).exp()
+        self.viscosity.eta_bar_capped(p)
     }
 
     /// Whether the flow depends on the pressure gradient (the exact Eyring flow does).

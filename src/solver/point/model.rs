@@ -6,10 +6,6 @@ use crate::physics::density::Density;
 use crate::physics::rheology::ShearLaw;
 use crate::physics::viscosity::Viscosity;
 
-/// `ln(eta/eta0)` is capped here so that `exp` stays finite; no converged EHL solution comes
-/// near it (it would need `alpha-bar P > 700`).
-const LN_ETA_MAX: f64 = 700.0;
-
 /// The parts of the dimensionless problem the discrete equations use.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Model {
@@ -52,7 +48,7 @@ impl Model {
         if p <= 0.0 {
             return 1.0;
         }
-        self.viscosity.ln_eta_bar(p).min(LN_ETA_MAX).exp()
+        self.viscosity.eta_bar_capped(p)
     }
 
     /// The mean shear stress `tau_m / tau0` at a node of pressure `p > 0` and film `h`: the

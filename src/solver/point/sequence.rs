@@ -29,8 +29,9 @@ pub(super) fn grid_sequence(
     starts[first].restore(mg, first);
     mg.make_top(first);
     let known = Known::default();
-    // Its own tallies: the solve counts the cycles of its finest level's first try.
-    let mut sequence = Tally::default();
+    // Its residuals and Newton work go in the solve's tally, its cycles not: the solve counts
+    // the cycles of its finest level's first try.
+    let cycles = tally.cycles;
     let mut converged = true;
     for k in first..=top {
         if k > first {
@@ -45,13 +46,11 @@ pub(super) fn grid_sequence(
             },
             known: &known,
         };
-        if converge_level(mg, k, params, &how, &mut sequence, observe).is_none() {
+        if converge_level(mg, k, params, &how, tally, observe).is_none() {
             converged = false;
             break;
         }
     }
-    tally.history.extend(&sequence.history);
-    tally.work.newton_steps += sequence.work.newton_steps;
-    tally.work.krylov_iterations += sequence.work.krylov_iterations;
+    tally.cycles = cycles;
     converged
 }
