@@ -76,7 +76,9 @@ class Solution:
     method: str
     """How the solve was made (multigrid cycles, Newton-Krylov finish, ...)."""
     level: Optional[int]
-    """Grid level."""
+    """The grid level solved on: one above the level asked for where that level's sliding
+    friction was estimated more than 1 % off (a point contact whose level converged by its
+    cycles)."""
     thermal: Optional[Dict[str, Any]]
     """The shear-heating post-process (None where it cannot be computed)."""
     errors: Optional[Dict[str, Any]]
