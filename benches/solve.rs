@@ -107,10 +107,11 @@ fn effects(c: &mut Criterion) {
     group.sample_size(10);
     group.measurement_time(Duration::from_secs(15));
     for (name, problem, rolling) in &variants {
-        let params = Params {
-            rolling_friction: *rolling,
-            require_positive_film: false,
-            ..Params::for_problem(problem, level)
+        let params = {
+            let mut params = Params::for_problem(problem, level);
+            params.friction.rolling = *rolling;
+            params.accuracy.require_positive_film = false;
+            params
         };
         if solve(problem, &params, None).is_err() {
             eprintln!("effects: {name} does not converge at level {level}; not timed");
@@ -226,9 +227,10 @@ fn speed(c: &mut Criterion) {
     // The solve alone (the unit the README's times are given in), without the coarser levels
     // of its error estimate; the product's solve with them as `table4-estimated`.
     for (name, problem, level) in runs {
-        let params = Params {
-            error_levels: 0,
-            ..Params::for_problem(problem, level)
+        let params = {
+            let mut params = Params::for_problem(problem, level);
+            params.accuracy.error_levels = 0;
+            params
         };
         group.bench_with_input(BenchmarkId::new(name, level), &level, |b, _| {
             b.iter(|| solve(problem, &params, None).expect("the speed cases converge"))

@@ -25,7 +25,7 @@ fn main() {
     let problem = Problem::from_case(&common::case_of(&a[1]), &LubricantTable::table1()).unwrap();
     let (wl, il): (u32, u32) = (a[2].parse().unwrap(), a[3].parse().unwrap());
     let mut wide_params = Params::for_problem(&problem, wl);
-    wide_params.error_levels = 0;
+    wide_params.accuracy.error_levels = 0;
     // The whole domain alone: the rectangles are this probe's own.
     wide_params.nested = false;
     let t = Instant::now();
@@ -68,7 +68,7 @@ fn main() {
         let mut params = Params::for_problem(&problem, il);
         params.domain = inner;
         // PROBE_ERROR_LEVELS: the coarser levels of the nested solve's error estimate.
-        params.error_levels = std::env::var("PROBE_ERROR_LEVELS")
+        params.accuracy.error_levels = std::env::var("PROBE_ERROR_LEVELS")
             .ok()
             .and_then(|v| v.parse().ok())
             .unwrap_or(0);

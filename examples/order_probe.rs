@@ -73,17 +73,18 @@ fn main() {
     );
     let mut rows: Vec<[f64; 6]> = Vec::new();
     for level in from..=to {
-        let mut params = point::Params {
-            domain,
-            edge,
-            friction_region: FrictionRegion::LoadedFilm,
-            ..point::Params::at_level(level)
+        let mut params = {
+            let mut params = point::Params::at_level(level);
+            params.domain = domain;
+            params.edge = edge;
+            params.friction.region = FrictionRegion::LoadedFilm;
+            params
         };
         if let Ok(t) = std::env::var("PROBE_OUTTOL") {
-            params.output_tolerance = t.parse().unwrap();
+            params.stopping.output_tolerance = t.parse().unwrap();
         }
         if let Ok(t) = std::env::var("PROBE_TOL") {
-            params.tolerance = t.parse().unwrap();
+            params.stopping.tolerance = t.parse().unwrap();
         }
         let t = std::time::Instant::now();
         let s = match point::solve(&problem, &params, None) {

@@ -92,7 +92,7 @@ fn main() {
             let (slip, tau0) = (p.groups.slip, p.groups.s_bar);
             let mut params = Params::for_problem(&p, level);
             if tight {
-                params.output_tolerance = 0.0;
+                params.stopping.output_tolerance = 0.0;
             }
             let clock = Instant::now();
             let cold = point::solve(&p, &params, None);

@@ -68,9 +68,10 @@ fn warm_agrees(case: &Case, level: u32, what: &str) -> (PointSolution, PointSolu
     let (start, base) = base_start(case, level);
     let params = Params::for_problem(&p, level);
     let warm = point::solve_from(&p, &params, &start, None).expect("warm converges");
-    let tight = Params {
-        output_tolerance: 0.0,
-        ..params.clone()
+    let tight = {
+        let mut params = params.clone();
+        params.stopping.output_tolerance = 0.0;
+        params
     };
     let cold = point::solve(&p, &tight, None).expect("cold converges");
     assert_eq!(warm.info.start, StartKind::Warm, "{what}: {:?}", warm.info);

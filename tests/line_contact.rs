@@ -66,10 +66,10 @@ fn elliptical_friction_trend_in_rx_over_ry_and_the_line_value() {
     // asserts the monotone trend and that all values stay within 5 % of the line value
     // (measured 3.3-4.0 % below it).
     let lubs = LubricantTable::table1();
-    let params = point::Params {
-        level: 5,
-        rolling_friction: false,
-        ..point::Params::default()
+    let params = {
+        let mut params = point::Params::at_level(5);
+        params.friction.rolling = false;
+        params
     };
     let mu: Vec<f64> = [1.0, 0.5, 0.2, 0.1]
         .iter()

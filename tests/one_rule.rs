@@ -371,13 +371,14 @@ fn the_papers_setup_beside_fig6_differs_from_the_rule_in_edge_domain_and_region_
     assert_ne!(rule.params.domain, Domain::default());
     assert_eq!(paper.params.domain, Domain::default());
     assert_eq!(paper.params.edge, Edge::Zero);
-    assert_eq!(paper.params.friction_region, FrictionRegion::Domain);
+    assert_eq!(paper.params.friction.region, FrictionRegion::Domain);
     // Nothing else differs.
-    let back = repro::solver::point::Params {
-        domain: rule.params.domain,
-        edge: Edge::FarField,
-        friction_region: FrictionRegion::LoadedFilm,
-        ..paper.params.clone()
+    let back = {
+        let mut params = paper.params.clone();
+        params.domain = rule.params.domain;
+        params.edge = Edge::FarField;
+        params.friction.region = FrictionRegion::LoadedFilm;
+        params
     };
     assert_eq!(back, rule.params);
 }

@@ -215,9 +215,10 @@ fn multigrid_converges_at_a_steady_rate_on_the_appendix_case() {
     // coarse-grid correction that weakens that much.
     let s = solve(
         &appendix_problem(),
-        &Params {
-            output_tolerance: 0.0,
-            ..Params::at_level(6)
+        &{
+            let mut params = Params::at_level(6);
+            params.stopping.output_tolerance = 0.0;
+            params
         },
         None,
     )
@@ -344,17 +345,19 @@ fn cycles_and_newton_krylov_agree_where_both_converge() {
     // of 1e-6 or a pressure change of 3e-7, without the output rule, which leave the film
     // within 1e-4 of its converged value): they must agree to that.
     let p = appendix_problem();
-    let tight = Params {
-        output_tolerance: 0.0,
-        ..Params::at_level(6)
+    let tight = {
+        let mut params = Params::at_level(6);
+        params.stopping.output_tolerance = 0.0;
+        params
     };
     let cycles = solve(&p, &tight, None).unwrap();
     assert_eq!(cycles.info.method, Method::Cycles);
     let newton = solve(
         &p,
-        &Params {
-            max_cycles: 1,
-            ..tight.clone()
+        &{
+            let mut params = tight.clone();
+            params.multigrid.max_cycles = 1;
+            params
         },
         None,
     )
@@ -402,9 +405,10 @@ fn a_closed_film_is_refined_to_the_next_level() {
     }
     let closed = solve(
         &p,
-        &Params {
-            refinement_levels: 0,
-            ..Params::at_level(7)
+        &{
+            let mut params = Params::at_level(7);
+            params.accuracy.refinement_levels = 0;
+            params
         },
         None,
     );
@@ -436,7 +440,7 @@ fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level
     let p = problem(&c);
     let rule = Params::for_problem(&p, 7);
     assert_eq!(
-        rule.accuracy,
+        rule.accuracy.target,
         Some(AccuracyTarget::FRICTION),
         "the rule's target"
     );
@@ -453,9 +457,10 @@ fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level
     // The same discrete solution as level 8 solved directly: two solves of the same
     // equations stopped by the output rule agree within its tolerance (5e-4; measured
     // 1.3e-5 in Hc, 1e-6 in mu-bar).
-    let direct = Params {
-        accuracy: None,
-        ..Params::for_problem(&p, 8)
+    let direct = {
+        let mut params = Params::for_problem(&p, 8);
+        params.accuracy.target = None;
+        params
     };
     let d = solve(&p, &direct, None).unwrap();
     for (got, want, what) in [
@@ -467,9 +472,10 @@ fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level
     // Without the target the solve stays on level 7 with its bound.
     let plain = solve(
         &p,
-        &Params {
-            accuracy: None,
-            ..rule
+        &{
+            let mut params = rule;
+            params.accuracy.target = None;
+            params
         },
         None,
     )
@@ -543,11 +549,11 @@ fn hard_case_5p4e_at_level_5_matches_plain_relaxation() {
 #[test]
 fn failure_is_a_typed_error_with_the_residual_history() {
     let p = problem(&dimensionless(1000.0, 15.0, 1.0, Rheology::Eyring));
-    let params = Params {
-        level: 5,
-        max_cycles: 2,
-        newton_steps: 0,
-        ..Params::default()
+    let params = {
+        let mut params = Params::at_level(5);
+        params.multigrid.max_cycles = 2;
+        params.newton.steps = 0;
+        params
     };
     match solve(&p, &params, None) {
         Err(SolveError::NotConverged {
@@ -601,9 +607,10 @@ fn the_output_rule_stops_within_its_bound_of_the_converged_solution() {
         let fast = solve(&p, &Params::at_level(level), None).unwrap();
         let tight = solve(
             &p,
-            &Params {
-                output_tolerance: 0.0,
-                ..Params::at_level(level)
+            &{
+                let mut params = Params::at_level(level);
+                params.stopping.output_tolerance = 0.0;
+                params
             },
             None,
         )
@@ -636,16 +643,17 @@ fn the_cycles_do_not_stop_on_a_fixed_point_that_is_not_a_solution() {
     let params = Params::at_level(6);
     let s = solve(&p, &params, None).unwrap();
     assert!(
-        s.info.residual() < params.tolerance,
+        s.info.residual() < params.stopping.tolerance,
         "residual {} at the end ({:?})",
         s.info.residual(),
         s.info.method
     );
     let newton = solve(
         &p,
-        &Params {
-            max_cycles: 1,
-            ..params.clone()
+        &{
+            let mut params = params.clone();
+            params.multigrid.max_cycles = 1;
+            params
         },
         None,
     )
@@ -673,10 +681,11 @@ fn the_loaded_film_region_leaves_a_heavy_contact_unchanged() {
     use repro::solver::point::{Edge, FrictionRegion};
     let p = problem(&dimensionless(1000.0, 15.0, 0.1, Rheology::Eyring));
     let at = |region| {
-        let params = Params {
-            friction_region: region,
-            edge: Edge::Zero,
-            ..Params::for_problem(&p, 5)
+        let params = {
+            let mut params = Params::for_problem(&p, 5);
+            params.friction.region = region;
+            params.edge = Edge::Zero;
+            params
         };
         solve(&p, &params, None).expect("converges")
     };
@@ -708,9 +717,10 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
     } else {
         9
     };
-    let fine_params = Params {
-        error_levels: 0,
-        ..Params::for_problem(&p, fine_level)
+    let fine_params = {
+        let mut params = Params::for_problem(&p, fine_level);
+        params.accuracy.error_levels = 0;
+        params
     };
     let fine = solve(&p, &fine_params, None).unwrap_or_else(|e| panic!("{what} L9: {e}"));
     let e = s
@@ -742,10 +752,10 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
             .estimate(output)
             .unwrap_or_else(|| panic!("{what}: no estimate of {name}"));
         // The outputs are converged to the stopping rule's output tolerance (5e-4 relative,
-        // `Params::output_tolerance`), so a difference below it is algebraic, not a grid
+        // `StoppingParams::output_tolerance`), so a difference below it is algebraic, not a grid
         // error: case 23's chain puts its central film 5.3e-4 from its level 8 with an
         // estimate of 2.3e-4 (order 2.5 over levels 5-7).
-        let algebraic = Params::default().output_tolerance * value.abs();
+        let algebraic = Params::default().stopping.output_tolerance * value.abs();
         let distance = (value - level_9).abs();
         assert!(
             estimate.error + algebraic >= distance,

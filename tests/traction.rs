@@ -53,9 +53,10 @@ fn solver_results_written_as_measured_rows_transform_back() {
             panic!("Table 3 names its lubricant")
         };
         let problem = Problem::from_case(case, &lubs).expect("valid case");
-        let params = Params {
-            require_positive_film: false,
-            ..Params::at_level(LEVEL)
+        let params = {
+            let mut params = Params::at_level(LEVEL);
+            params.accuracy.require_positive_film = false;
+            params
         };
         let s = solve(&problem, &params, None)
             .unwrap_or_else(|e| panic!("Table 3 case {}: {e}", i + 1));

@@ -90,11 +90,10 @@ impl Table4Level {
 /// too thin: 64 x 64 points do not resolve this load), and that a row is its level: no finer
 /// level for the accuracy target.
 pub fn params(problem: &Problem, level: u32) -> Params {
-    Params {
-        require_positive_film: level > 5,
-        accuracy: None,
-        ..Params::for_problem(problem, level)
-    }
+    let mut params = Params::for_problem(problem, level);
+    params.accuracy.require_positive_film = level > 5;
+    params.accuracy.target = None;
+    params
 }
 
 /// Solves the case at each level, one after the other (the times are comparable);
@@ -142,7 +141,7 @@ pub fn jobs(spec: &Table4Case, levels: &[u32]) -> Result<Vec<Job>, PipelineError
                 key: key_of(&(
                     "table4",
                     case_key(&spec.case, &params, None),
-                    params.require_positive_film,
+                    params.accuracy.require_positive_film,
                 )),
                 label: format!("Appendix case ({})", case_label(&spec.case, level)),
                 solve: Solve::Point {

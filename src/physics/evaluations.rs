@@ -109,9 +109,10 @@ mod tests {
     fn evaluated_with_cycles(physics: Physics, rolling: bool) -> (Counts, usize) {
         take();
         let problem = case(physics);
-        let params = Params {
-            rolling_friction: rolling,
-            ..Params::at_level(4)
+        let params = {
+            let mut params = Params::at_level(4);
+            params.friction.rolling = rolling;
+            params
         };
         let s = solve(&problem, &params, None).unwrap();
         let _ = problem.tau_c();

@@ -1,14 +1,15 @@
 //! Jobs: each solve of a target as its cache key, a readable label, what to solve and the
 //! job of the base it starts from. The one rule from a case to its solver parameters
-//! ([`Params::for_problem`]) is applied here for every target's point contacts
-//! ([`point_jobs`]).
+//! ([`Params::for_problem`], and [`line::Params::for_problem`] for a line contact) is applied
+//! here for every target's contacts ([`point_jobs`], [`line_job`]).
 
 use super::base::base_of;
-use super::keys::case_key;
+use super::keys::{case_key, line_key};
 use super::label::case_label;
 use super::outcome::{CaseOutcome, ThermalFailure};
+use crate::physics::case::Physics;
 use crate::physics::case::{Case, CaseError, CaseForm, Problem};
-use crate::physics::line_contact::LineProblem;
+use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{ThermalContact, TARGET_INPUTS};
 use crate::pipeline::error::PipelineError;
@@ -194,12 +195,13 @@ impl Setup {
         let rule = Params::for_problem(problem, level);
         match self {
             Setup::Rule => rule,
-            Setup::Paper => Params {
-                domain: Domain::default(),
-                edge: Edge::Zero,
-                friction_region: FrictionRegion::Domain,
-                ..rule
-            },
+            Setup::Paper => {
+                let mut paper = rule;
+                paper.domain = Domain::default();
+                paper.edge = Edge::Zero;
+                paper.friction.region = FrictionRegion::Domain;
+                paper
+            }
         }
     }
 }
@@ -246,4 +248,41 @@ pub fn point_jobs_in(
             })
         })
         .collect()
+}
+
+/// A line contact's job, with the problem and parameters it solves.
+#[derive(Debug, Clone)]
+pub struct LineJob {
+    /// The job.
+    pub job: Job,
+    /// The contact's dimensionless problem.
+    pub problem: LineProblem,
+    /// Its solver parameters.
+    pub params: line::Params,
+}
+
+/// The job of the line contact `case` with `physics` at `level`, with the parameters its
+/// problem calls for (the line solver's rule, [`line::Params::for_problem`]); `label` names it.
+pub fn line_job(
+    case: &LinePhysicalCase,
+    physics: Physics,
+    level: u32,
+    label: String,
+) -> Result<LineJob, CaseError> {
+    let problem = LineProblem::from_physical(case, physics)?;
+    let params = line::Params::for_problem(&problem, level);
+    let job = Job {
+        key: line_key(case, &physics, &params),
+        label,
+        solve: Solve::Line {
+            problem: problem.clone(),
+            params: params.clone(),
+        },
+        base: None,
+    };
+    Ok(LineJob {
+        job,
+        problem,
+        params,
+    })
 }

@@ -24,8 +24,11 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
         case,
         params.level,
         (d.x_start, d.x_end, d.y_half),
-        params.rolling_friction,
-        (params.require_positive_film, params.refinement_levels),
+        params.friction.rolling,
+        (
+            params.accuracy.require_positive_film,
+            params.accuracy.refinement_levels,
+        ),
         SOLVER_REVISION,
         (THERMAL_REVISION, TARGET_INPUTS),
         base_key,
@@ -34,8 +37,8 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
     // beside Fig. 6), and the accuracy target, where one is set (the rule's, and an
     // expert's): a key without either is a solve to its level as given.
     let rule =
-        params.edge == Edge::FarField && params.friction_region == FrictionRegion::LoadedFilm;
-    match (rule, params.accuracy) {
+        params.edge == Edge::FarField && params.friction.region == FrictionRegion::LoadedFilm;
+    match (rule, params.accuracy.target) {
         (true, None) => key_of(&key),
         (false, None) => key_of(&(key, setup(params))),
         (_, Some(target)) => key_of(&(key, setup(params), target)),
@@ -44,7 +47,7 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
 
 /// The edge and friction region of `params`, as a key part.
 fn setup(params: &Params) -> String {
-    format!("{:?} {:?}", params.edge, params.friction_region)
+    format!("{:?} {:?}", params.edge, params.friction.region)
 }
 
 /// The cache key of a line contact at the given solver parameters (the parameters a target

@@ -86,6 +86,14 @@ impl Provenance {
         }
     }
 
+    /// Lists a set of solver parameters, as they print, unless it is listed already.
+    pub fn add_params(&mut self, params: &impl std::fmt::Debug) {
+        let params = format!("{params:?}");
+        if !self.params.contains(&params) {
+            self.params.push(params);
+        }
+    }
+
     /// Adds the rows of `file`: `(key, stamp)` of each, in row order.
     pub fn add_rows<'a>(
         &mut self,

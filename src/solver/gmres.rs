@@ -10,15 +10,14 @@
 //! which applies `M^-1` once more to a combination of the `v_k`, left an error of 4e-7 behind
 //! a reported 4e-13 residual); and that last application is saved.
 
-/// When [`solve`] stops.
+/// How long a GMRES solve may run: the GMRES solves of the Newton-Krylov finish
+/// ([`crate::solver::point::NewtonParams::krylov`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Params {
+pub struct KrylovParams {
     /// Krylov vectors kept before a restart.
     pub restart: usize,
-    /// Most iterations (matrix-vector products) in all.
+    /// Most iterations (matrix-vector products) in all. Default 200 per Newton step.
     pub max_iterations: usize,
-    /// Relative residual `|b - A x| / |b|` to reach.
-    pub tolerance: f64,
 }
 
 /// What [`solve`] reached.
@@ -39,12 +38,13 @@ fn norm(a: &[f64]) -> f64 {
     dot(a, a).sqrt()
 }
 
-/// Solves `A x = b` from `x = 0`: `apply(v, out)` sets `out = A v`, `precondition(v, out)`
-/// sets `out = M^-1 v`. `x` receives the solution.
+/// Solves `A x = b` from `x = 0` to the relative residual `|b - A x| / |b|` `tolerance`: `apply(v,
+/// out)` sets `out = A v`, `precondition(v, out)` sets `out = M^-1 v`. `x` receives the solution.
 pub(crate) fn solve(
     b: &[f64],
     x: &mut [f64],
-    params: &Params,
+    params: &KrylovParams,
+    tolerance: f64,
     mut apply: impl FnMut(&[f64], &mut [f64]),
     mut precondition: impl FnMut(&[f64], &mut [f64]),
 ) -> Outcome {
@@ -81,7 +81,7 @@ pub(crate) fn solve(
         }
         let beta = norm(&r);
         relative = beta / b_norm;
-        if relative <= params.tolerance || iterations >= params.max_iterations {
+        if relative <= tolerance || iterations >= params.max_iterations {
             break;
         }
         for (v, ri) in basis[0].iter_mut().zip(&r) {
@@ -134,7 +134,7 @@ pub(crate) fn solve(
             g[k] *= cs[k];
             k += 1;
             relative = g[k].abs() / b_norm;
-            if relative <= params.tolerance || h_next == 0.0 {
+            if relative <= tolerance || h_next == 0.0 {
                 break;
             }
         }
@@ -152,7 +152,7 @@ pub(crate) fn solve(
                 *xj += yi * zj;
             }
         }
-        if relative <= params.tolerance || iterations >= params.max_iterations || k == 0 {
+        if relative <= tolerance || iterations >= params.max_iterations || k == 0 {
             break;
         }
     }
@@ -203,11 +203,11 @@ mod tests {
             let out = solve(
                 &b,
                 &mut x,
-                &Params {
+                &KrylovParams {
                     restart,
                     max_iterations: 1000,
-                    tolerance: 1e-12,
                 },
+                1e-12,
                 |v, o| multiply(&a, v, o),
                 |v, o| o.copy_from_slice(v),
             );
@@ -239,11 +239,11 @@ mod tests {
         let out = solve(
             &b,
             &mut x,
-            &Params {
+            &KrylovParams {
                 restart: 20,
                 max_iterations: 50,
-                tolerance: 1e-10,
             },
+            1e-10,
             |v, o| multiply(&a, v, o),
             inverse,
         );

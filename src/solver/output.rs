@@ -98,7 +98,7 @@ pub struct OutputErrors {
     pub levels: Vec<LevelValues>,
     /// Wall time of the coarser levels' solves, s: what the estimate costs.
     pub seconds: f64,
-    /// Why the ladder of coarser levels ended before [`crate::solver::point::Params::error_levels`]
+    /// Why the ladder of coarser levels ended before [`crate::solver::point::AccuracyParams::error_levels`]
     /// levels (`None` where it did not).
     #[serde(default)]
     pub stopped: Option<LadderStop>,

@@ -153,12 +153,12 @@ pub struct SolveArgs {
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub edge: EdgeArg,
     /// Most multigrid cycles on the finest level.
-    #[arg(long = "max-cycles", default_value_t = Params::default().max_cycles, help_heading = "Numerics")]
+    #[arg(long = "max-cycles", default_value_t = Params::default().multigrid.max_cycles, help_heading = "Numerics")]
     pub max_cycles: usize,
     /// Most Newton steps per level of the Newton-Krylov finish that takes over a
     /// point-contact solve when its cycles stall, diverge or run out (grid-sequenced from
     /// level 5 up to the finest); 0 turns the finish off.
-    #[arg(long = "newton-steps", default_value_t = Params::default().newton_steps, help_heading = "Numerics")]
+    #[arg(long = "newton-steps", default_value_t = Params::default().newton.steps, help_heading = "Numerics")]
     pub newton_steps: usize,
     /// Skip the rolling (Poiseuille) part of the friction.
     #[arg(long = "no-rolling", help_heading = "Numerics")]

@@ -145,10 +145,9 @@ impl AccuracyCase {
 /// figure's closed film is re-solved one level finer; here the level fails, and its point is
 /// left out, rather than a finer level's time and error being shown under its name).
 pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
-    point::Params {
-        refinement_levels: 0,
-        ..point::Params::for_problem(problem, level)
-    }
+    let mut params = point::Params::for_problem(problem, level);
+    params.accuracy.refinement_levels = 0;
+    params
 }
 
 /// The first physical case of the shipped sweep `sweep` that `matches`; `what` names it in

@@ -11,8 +11,7 @@ use crate::pipeline::cache::Stamp;
 use crate::pipeline::csv::rows;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{run_jobs, CachePolicy, RunProgress};
-use crate::pipeline::job::{Job, Solve};
-use crate::pipeline::keys::line_key;
+use crate::pipeline::job::{line_job, Job, LineJob};
 use crate::pipeline::outcome::{CaseOutcome, Output};
 use crate::solver::line::Params;
 use serde::Serialize;
@@ -49,6 +48,8 @@ pub struct LineRun {
     pub case: LinePhysicalCase,
     /// Its problem (groups, `tau_c`).
     pub problem: LineProblem,
+    /// The solver parameters it was solved with (the line solver's rule, [`line_job`]).
+    pub params: Params,
     /// Solved or failed.
     pub outcome: CaseOutcome,
     /// Its cache key.
@@ -60,34 +61,24 @@ pub struct LineRun {
 }
 
 /// The five Table 3 line contacts at `level` as jobs (labelled `line contact 1..5`), each
-/// with the parameters its problem calls for ([`Params::for_problem`]), with their cases and
-/// problems.
-pub fn table3_jobs(level: u32) -> Result<Vec<(Job, LinePhysicalCase, LineProblem)>, PipelineError> {
+/// with the parameters its problem calls for ([`line_job`]), with their cases.
+pub fn table3_jobs(level: u32) -> Result<Vec<(LineJob, LinePhysicalCase)>, PipelineError> {
     let (cases, physics) = table3_line_cases()?;
     cases
         .into_iter()
         .enumerate()
         .map(|(i, case)| {
-            let problem = LineProblem::from_physical(&case, physics)
+            let label = format!(
+                "line contact {} (p_H {} GPa, u_m {} m/s, S {}, tau0 {} MPa, level {level})",
+                i + 1,
+                case.ph_pa / 1e9,
+                case.um_m_s,
+                case.slip,
+                case.tau0_pa / 1e6
+            );
+            let job = line_job(&case, physics, level, label)
                 .map_err(|e| PipelineError::case("cases/fig7.toml: line contact", e))?;
-            let params = Params::for_problem(&problem, level);
-            let job = Job {
-                key: line_key(&case, &physics, &params),
-                label: format!(
-                    "line contact {} (p_H {} GPa, u_m {} m/s, S {}, tau0 {} MPa, level {level})",
-                    i + 1,
-                    case.ph_pa / 1e9,
-                    case.um_m_s,
-                    case.slip,
-                    case.tau0_pa / 1e6
-                ),
-                solve: Solve::Line {
-                    problem: problem.clone(),
-                    params,
-                },
-                base: None,
-            };
-            Ok((job, case, problem))
+            Ok((job, case))
         })
         .collect()
 }
@@ -102,16 +93,17 @@ pub fn solve_table3(
     warn: &(dyn Fn(String) + Sync),
 ) -> Result<Vec<LineRun>, PipelineError> {
     let jobs = table3_jobs(level)?;
-    let list: Vec<Job> = jobs.iter().map(|(j, _, _)| j.clone()).collect();
+    let list: Vec<Job> = jobs.iter().map(|(j, _)| j.job.clone()).collect();
     let done = run_jobs(target, &list, store, progress, warn)?;
     Ok(jobs
         .into_iter()
         .zip(done)
-        .map(|((job, case, problem), d)| LineRun {
+        .map(|((job, case), d)| LineRun {
             case,
-            problem,
+            problem: job.problem,
+            params: job.params,
             outcome: d.outcome,
-            key: job.key,
+            key: job.job.key,
             stamp: d.stamp,
             cached: d.cached,
         })

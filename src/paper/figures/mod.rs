@@ -85,7 +85,7 @@ impl Artefact for SweepFigure {
             jobs.extend(
                 line::table3_jobs(LINE_LEVEL)?
                     .into_iter()
-                    .map(|(j, _, _)| j),
+                    .map(|(j, _)| j.job),
             );
         }
         Ok(jobs)

@@ -2,7 +2,7 @@
 //! stamp of every row of its CSVs, and the solver parameters they were solved with.
 
 use super::line::LineRun;
-use crate::paper::artefact::{TargetReport, LINE_LEVEL};
+use crate::paper::artefact::TargetReport;
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;
@@ -30,10 +30,7 @@ fn provenance(
         // The rule's parameters differ from case to case (the domain): each distinct set once,
         // in the order of the rows that first use it.
         for run in runs {
-            let params = format!("{:?}", run.params);
-            if !p.params.contains(&params) {
-                p.params.push(params);
-            }
+            p.add_params(&run.params);
         }
     }
     p.add_rows(
@@ -42,10 +39,9 @@ fn provenance(
     );
     if let Some(line) = line {
         p.line_solver_revision = Some(LINE_SOLVER_REVISION.to_string());
-        p.params.push(format!(
-            "{:?}",
-            crate::solver::line::Params::at_level(LINE_LEVEL)
-        ));
+        for run in line {
+            p.add_params(&run.params);
+        }
         p.add_rows(
             &format!("{stem}-line.csv"),
             line.iter().map(|r| (r.key.as_str(), r.stamp.as_ref())),

@@ -325,8 +325,8 @@ impl Default for SolveInputs {
             level: None,
             domain: None,
             edge: None,
-            max_cycles: params.max_cycles,
-            newton_steps: params.newton_steps,
+            max_cycles: params.multigrid.max_cycles,
+            newton_steps: params.newton.steps,
             rolling_friction: true,
             cold: false,
             k_solid: 46.0,
@@ -391,14 +391,15 @@ impl SolveInputs {
             problem,
             check_level("--level", self.level.unwrap_or(WORKING_LEVEL))?,
         );
-        Ok(point::Params {
+        let mut params = point::Params {
             domain: self.domain.unwrap_or(rule.domain),
             edge: self.edge.unwrap_or(rule.edge),
-            max_cycles: self.max_cycles,
-            newton_steps: self.newton_steps,
-            rolling_friction: self.rolling_friction,
             ..rule
-        })
+        };
+        params.multigrid.max_cycles = self.max_cycles;
+        params.newton.steps = self.newton_steps;
+        params.friction.rolling = self.rolling_friction;
+        Ok(params)
     }
 
     /// The line-contact problem the inputs describe (`line`).

@@ -137,11 +137,9 @@ fn chain_from(
     start: Option<&Start>,
     observe: &mut dyn FnMut(&Progress),
 ) -> Result<Chain, SolveError> {
-    let params = Params {
-        error_levels: 0,
-        nested: false,
-        ..params.clone()
-    };
+    let mut params = params.clone();
+    params.accuracy.error_levels = 0;
+    params.nested = false;
     let wide = solve_with(problem, (&params, None), start, Some(&mut *observe))?;
     let mut chain = Chain {
         solutions: vec![wide],
@@ -190,7 +188,7 @@ fn chain_from(
 
 /// The solve of a case whose parameters ask for nested domains ([`Params::nested`]): its
 /// chain at `params.level`, the case-sized domain from `start` where it fits, and the chains
-/// at the `params.error_levels` levels below for the error estimate (cold; a level that
+/// at the `params.accuracy.error_levels` levels below for the error estimate (cold; a level that
 /// fails ends the estimate there). The solution is the innermost grid's, with the chain's
 /// friction, the whole time and the case-sized domain's solution as its surroundings (a
 /// related case's start).
@@ -223,8 +221,8 @@ pub(super) fn solve_point(
             return Ok(s);
         }
     };
-    let errors = (params.error_levels > 0)
-        .then(|| chain_errors(problem, params, &chain, params.error_levels));
+    let errors = (params.accuracy.error_levels > 0)
+        .then(|| chain_errors(problem, params, &chain, params.accuracy.error_levels));
     let friction = chain.friction(problem);
     let mut solutions = chain.solutions;
     let mut solution = solutions.pop().expect("a chain has its case-sized domain");

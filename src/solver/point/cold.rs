@@ -61,7 +61,11 @@ pub(super) fn converge(
             mg.interpolate(k);
         }
         // The coarsest level alone is solved once (its "cycle" is a full solve).
-        let cycles = if k == 0 { 1 } else { params.fmg_cycles };
+        let cycles = if k == 0 {
+            1
+        } else {
+            params.multigrid.fmg_cycles
+        };
         for cycle in 1..=cycles {
             let before = mg.levels[k].p.clone();
             mg.cycle(k);
@@ -80,8 +84,8 @@ pub(super) fn converge(
         mg.interpolate(top);
     }
     let windows = StallWindows {
-        stall: params.stall_cycles,
-        early: params.early_stall_cycles,
+        stall: params.multigrid.stall_cycles,
+        early: params.multigrid.early_stall_cycles,
     };
     let finest = converge_by_cycles(&mut mg, top, params, windows, &Known::default(), observe);
     let mut tally = Tally {
@@ -92,7 +96,7 @@ pub(super) fn converge(
     tally.history.extend(&finest.history);
     let mut method = Method::Cycles;
     let mut converged = finest.converged;
-    if !converged && params.newton_steps == 0 {
+    if !converged && params.newton.steps == 0 {
         if let Some(cycle) = finest.non_finite {
             return Err(SolveError::NonFinite {
                 what: "pressure or residual",
@@ -101,7 +105,7 @@ pub(super) fn converge(
             });
         }
     }
-    if !converged && params.newton_steps > 0 {
+    if !converged && params.newton.steps > 0 {
         method = Method::NewtonKrylov;
         // Cycles that crept close to the solution (a heavily loaded case converging too
         // slowly) hand their best state to Newton on the finest level; otherwise, or where

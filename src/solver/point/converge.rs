@@ -29,7 +29,7 @@ impl Tally {
     pub(super) fn not_converged(&self, params: &Params) -> SolveError {
         SolveError::NotConverged {
             cycles: self.cycles,
-            tolerance: params.tolerance,
+            tolerance: params.stopping.tolerance,
             residual_history: self.history.clone(),
         }
     }
@@ -70,7 +70,7 @@ impl<'a> How<'a> {
         How {
             cycles: true,
             windows: StallWindows {
-                stall: params.stall_cycles,
+                stall: params.multigrid.stall_cycles,
                 early: 0,
             },
             known,
@@ -87,7 +87,7 @@ impl<'a> How<'a> {
 }
 
 /// Converges level `k` (the top) from its current state as `how` says, counting into
-/// `tally`: the cycles; where they fail, Newton-Krylov (if [`Params::newton_steps`] allows)
+/// `tally`: the cycles; where they fail, Newton-Krylov (if [`super::NewtonParams::steps`] allows)
 /// from the better of the cycles' best state, where they stayed finite, and the start; where
 /// that stalls, [`polish_and_finish`]. How it converged, `None` where it did not.
 pub(super) fn converge_level(
@@ -113,7 +113,7 @@ pub(super) fn converge_level(
             run.best.restore(mg, k);
         }
     }
-    let converged = params.newton_steps > 0
+    let converged = params.newton.steps > 0
         && (tally
             .work
             .add(&finish(mg, k, params, observe, &mut tally.history))
@@ -135,8 +135,8 @@ fn polish_and_finish(
     tally: &mut Tally,
 ) -> bool {
     let windows = StallWindows {
-        stall: params.sequence_stall_cycles,
-        early: params.early_stall_cycles,
+        stall: params.multigrid.sequence_stall_cycles,
+        early: params.multigrid.early_stall_cycles,
     };
     let run = converge_by_cycles(mg, k, params, windows, &Known::default(), observe);
     tally.history.extend(&run.history);

@@ -8,8 +8,8 @@ use super::stopping::{self, Known};
 use super::{friction, Edge, Params};
 use crate::solver::output::{mean_change, Progress, Step};
 
-/// When a run of cycles counts as stalled (see [`Params::stall_cycles`],
-/// [`Params::early_stall_cycles`]).
+/// When a run of cycles counts as stalled (see [`super::MultigridParams::stall_cycles`],
+/// [`super::MultigridParams::early_stall_cycles`]).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct StallWindows {
     pub(super) stall: usize,
@@ -128,7 +128,7 @@ pub(super) fn converge_by_cycles(
     if fitted {
         mg.fit_far_field(k);
     }
-    for cycle in 1..=params.max_cycles {
+    for cycle in 1..=params.multigrid.max_cycles {
         let before = mg.levels[k].p.clone();
         mg.cycle(k);
         let progress = cycle_progress(mg, k, cycle, &before);
@@ -153,28 +153,28 @@ pub(super) fn converge_by_cycles(
         // A residual a thousand times above the best one seen is divergence, not noise. A
         // stall ends the cycles only where the Newton-Krylov finish can take over;
         // otherwise they run on (some cases converge after a long noisy stretch).
-        let stall = params.newton_steps > 0 && windows.stalled(&history, &changes);
+        let stall = params.newton.steps > 0 && windows.stalled(&history, &changes);
         if residual > DIVERGENCE_FACTOR * best_residual || stall {
             break;
         }
-        if params.output_tolerance > 0.0 {
+        if params.stopping.output_tolerance > 0.0 {
             let [h_central, h_min, sliding, rolling] = stop_outputs(mg, k, params);
             outputs.push(h_central, h_min, sliding, rolling);
         }
         // With the outputs' rule on, only settled outputs end the cycles: a residual below
         // its tolerance, or a pressure change below its own, can come while an output is
         // still far off (a side-lobe minimum film of a heavy contact).
-        let rule = params.output_tolerance > 0.0;
-        let settled = rule && outputs.settled(params.output_tolerance);
+        let rule = params.stopping.output_tolerance > 0.0;
+        let settled = rule && outputs.settled(params.stopping.output_tolerance);
         let still = if rule {
             settled
         } else {
-            progress.pressure_change < params.pressure_tolerance
+            progress.pressure_change < params.stopping.pressure_tolerance
         };
-        let residual_done = residual < params.tolerance && (settled || !rule);
+        let residual_done = residual < params.stopping.tolerance && (settled || !rule);
         if still
-            && residual >= params.tolerance
-            && params.newton_steps > 0
+            && residual >= params.stopping.tolerance
+            && params.newton.steps > 0
             && !stopping::residual_falls(&history)
             && !known.start.is_some_and(|w| w.accepts(residual))
         {
@@ -188,7 +188,7 @@ pub(super) fn converge_by_cycles(
             // finish takes over ([`stopping::residual_falls`]).
             break;
         }
-        if (residual_done || still) && progress.load_error < params.load_tolerance {
+        if (residual_done || still) && progress.load_error < params.stopping.load_tolerance {
             if fitted && refits < FAR_FIELD_ROUNDS {
                 let now = edge_outputs(mg, k, params);
                 let settled_outputs = last_outputs.is_some_and(|o| outputs_settled(&o, &now));
@@ -231,7 +231,7 @@ const DIVERGENCE_FACTOR: f64 = 1e3;
 pub(super) fn stop_outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 4] {
     let level = &mg.levels[k];
     let film = friction::film(level, 1.0);
-    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction_region);
+    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction.region);
     [
         film.h_central,
         film.h_min,
@@ -245,7 +245,7 @@ pub(super) fn stop_outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 4
 pub(super) fn edge_outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 3] {
     let level = &mg.levels[k];
     let film = friction::film(level, 1.0);
-    let mu = friction::friction(level, &mg.model, None, params.friction_region);
+    let mu = friction::friction(level, &mg.model, None, params.friction.region);
     [film.h_central, film.h_min, mu.sliding]
 }
 

@@ -60,18 +60,12 @@ fn newton_solve(
         level,
         &model,
         &mut h0,
-        &newton::Limits {
-            steps: params.newton_steps,
-            tolerance: params.tolerance,
-            load_tolerance: params.load_tolerance,
-            box_radius: params.box_radius,
-            krylov_restart: KRYLOV_RESTART,
-            krylov_iterations: params.krylov_iterations,
-            first_forcing: if mg.warm {
-                newton::warm_first_forcing(level_number(level))
-            } else {
-                newton::FIRST_FORCING
-            },
+        &params.newton,
+        &params.stopping,
+        if mg.warm {
+            newton::warm_first_forcing(level_number(level))
+        } else {
+            newton::FIRST_FORCING
         },
         &mut |level: &level::Level, step: &newton::Step| {
             steps += 1;
@@ -94,7 +88,3 @@ fn newton_solve(
     mg.h0 = h0;
     outcome
 }
-
-/// GMRES vectors kept before a restart: more than the preconditioned systems need (the
-/// feasibility study: 20 iterations to 1e-6 at level 7), so restarts are rare.
-const KRYLOV_RESTART: usize = 60;

@@ -1,6 +1,6 @@
 //! The discretisation error of the outputs: the converged finest level restricted to each of
-//! [`Params::error_levels`] coarser levels in turn, converged there as that level's own
-//! problem (its own equations and far field, not the coarse-grid problem of a cycle), and the
+//! [`super::AccuracyParams::error_levels`] coarser levels in turn, converged there as that level's
+//! own problem (its own equations and far field, not the coarse-grid problem of a cycle), and the
 //! central film, minimum film and sliding friction of all of them extrapolated
 //! ([`crate::solver::richardson`]).
 //!
@@ -63,14 +63,14 @@ fn inject(mg: &mut Hierarchy, k: usize) {
     }
 }
 
-/// Relaxations per visit of the coarsest grid when a coarser level of the ladder is the top
-/// (the top level's cycles keep [`Params::coarsest_sweeps`], 50). The coarsest visit is a
-/// fixed cost per cycle, 50 sweeps of 33 x 33 nodes: about 11 % of a level-7 cycle, but 36 %
-/// of a level-6 and 80 % of a level-5 one (node counts). The parameter's own study found 50
-/// sweeps instead of 100 a third cheaper at level 5 for the same cycles; 20 instead of 50 on
-/// the ladder of Fig. 3's 125 cases at level 7 took 0.4 more cycles per level-6 and 0.5 per
-/// level-5 solve and cut the ladder's time by a quarter (18.6 s to 14.0 s); 10 sweeps took
-/// 3.4 and 6.3 more cycles and saved nothing.
+/// Relaxations per visit of the coarsest grid when a coarser level of the ladder is the top (the
+/// top level's cycles keep [`super::MultigridParams::coarsest_sweeps`], 50). The coarsest visit is
+/// a fixed cost per cycle, 50 sweeps of 33 x 33 nodes: about 11 % of a level-7 cycle, but 36 % of a
+/// level-6 and 80 % of a level-5 one (node counts). The parameter's own study found 50 sweeps
+/// instead of 100 a third cheaper at level 5 for the same cycles; 20 instead of 50 on the ladder of
+/// Fig. 3's 125 cases at level 7 took 0.4 more cycles per level-6 and 0.5 per level-5 solve and cut
+/// the ladder's time by a quarter (18.6 s to 14.0 s); 10 sweeps took 3.4 and 6.3 more cycles and
+/// saved nothing.
 const LADDER_COARSEST_SWEEPS: usize = 20;
 
 /// Converges level `k` as the top, the way the top level converged (`method`: cycles, with
@@ -122,8 +122,8 @@ fn converge_rung(
         .then(|| mg.residual_norm(k).0)
 }
 
-/// The outputs of the converged top level of `mg` and of up to `params.error_levels` coarser
-/// levels converged on their own (from `warm`, the base's, where they are of the same
+/// The outputs of the converged top level of `mg` and of up to `params.accuracy.error_levels`
+/// coarser levels converged on their own (from `warm`, the base's, where they are of the same
 /// levels), their estimates, and the coarser solutions. The film constant is restored after.
 pub(super) fn output_errors(
     mg: &mut Hierarchy,
@@ -139,7 +139,7 @@ pub(super) fn output_errors(
     let mut stopped = None;
     let h0 = mg.h0;
     let sweeps = mg.set_coarsest_sweeps(LADDER_COARSEST_SWEEPS);
-    for step in 1..=params.error_levels as usize {
+    for step in 1..=params.accuracy.error_levels as usize {
         // The hierarchy's coarsest level is solved by relaxation alone: never a top.
         let Some(k) = top.checked_sub(step).filter(|&k| k >= 1) else {
             break;

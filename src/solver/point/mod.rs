@@ -50,7 +50,10 @@ pub use ladder::CoarseSolution;
 pub(crate) use level::LOAD;
 use multigrid::Hierarchy;
 use nested::Surround;
-pub use params::{Edge, Params};
+pub use params::{
+    AccuracyParams, Edge, FrictionParams, KrylovParams, MultigridParams, NewtonParams, Params,
+    StoppingParams,
+};
 pub use refine::AccuracyTarget;
 use std::sync::Arc;
 use std::time::Instant;
@@ -79,11 +82,11 @@ pub struct PointSolution {
     pub film: Film,
     /// Reduced friction.
     pub friction: Friction,
-    /// The region the friction was integrated over ([`Params::friction_region`]).
+    /// The region the friction was integrated over ([`FrictionParams::region`]).
     pub friction_region: FrictionRegion,
     /// Convergence information.
     pub info: Info,
-    /// The outputs' discretisation error ([`Params::error_levels`]; `None` where it is 0).
+    /// The outputs' discretisation error ([`AccuracyParams::error_levels`]; `None` where it is 0).
     pub errors: Option<OutputErrors>,
     /// The coarser levels' solutions behind `errors`, finest first: a member's ladder starts
     /// from them ([`Start::coarser`]).
@@ -178,15 +181,16 @@ fn solve_with(
             params.level
         )));
     }
-    if params.coarsest_level < 2 || params.gamma == 0 {
+    if params.multigrid.coarsest_level < 2 || params.multigrid.gamma == 0 {
         return Err(SolveError::InvalidParams(format!(
             "coarsest level {} must be at least 2, gamma {} positive",
-            params.coarsest_level, params.gamma
+            params.multigrid.coarsest_level, params.multigrid.gamma
         )));
     }
-    let params = &Params {
-        coarsest_level: params.coarsest_level.min(params.level),
-        ..params.clone()
+    let params = &{
+        let mut clamped = params.clone();
+        clamped.multigrid.coarsest_level = params.multigrid.coarsest_level.min(params.level);
+        clamped
     };
     let g = &problem.groups;
     let mut observe = |p: &Progress| {
@@ -228,8 +232,8 @@ fn solve_with(
     // somewhere (the side lobes of the most heavily loaded contacts, M above ~5000, where the
     // film is a thousandth of the Hertzian approach and the grid's error in the deformation
     // at the contact edge exceeds it), or outputs whose estimated discretisation error misses
-    // the accuracy target ([`Params::accuracy`]), then ask for a finer grid ([`refine`]),
-    // within [`Params::refinement_levels`]. The refined level's ladder starts from the
+    // the accuracy target ([`AccuracyParams::target`]), then ask for a finer grid ([`refine`]),
+    // within [`AccuracyParams::refinement_levels`]. The refined level's ladder starts from the
     // levels below as they converged.
     let mut refinements = 0;
     let mut warm_coarser: Vec<CoarseSolution> = match (start_kind, warm_start) {
@@ -246,13 +250,13 @@ fn solve_with(
             &mut tally,
             &mut observe,
         )?;
-        let may_refine =
-            refinements < params.refinement_levels && level_number(mg.finest()) < MAX_LEVEL;
+        let may_refine = refinements < params.accuracy.refinement_levels
+            && level_number(mg.finest()) < MAX_LEVEL;
         let film = friction::film(mg.finest(), g.moes_film_scale);
         let closed = film.h_min <= 0.0;
-        if !(params.require_positive_film && closed && may_refine) {
+        if !(params.accuracy.require_positive_film && closed && may_refine) {
             let fine = mg.finest();
-            if params.require_positive_film && closed {
+            if params.accuracy.require_positive_film && closed {
                 let level = level_number(fine);
                 return Err(SolveError::FilmCollapse {
                     h_min: film.h_min,
@@ -264,7 +268,7 @@ fn solve_with(
                 });
             }
             let friction =
-                friction::friction(fine, &mg.model, mg.rolling_scale, params.friction_region);
+                friction::friction(fine, &mg.model, mg.rolling_scale, params.friction.region);
             if !friction.sliding.is_finite() || !friction.total().is_finite() {
                 return Err(SolveError::NonFinite {
                     what: "friction",
@@ -278,7 +282,7 @@ fn solve_with(
             } else {
                 method
             };
-            let (errors, coarser) = if params.error_levels > 0 {
+            let (errors, coarser) = if params.accuracy.error_levels > 0 {
                 let (e, c) =
                     ladder::output_errors(&mut mg, params, used, &warm_coarser, &mut observe);
                 (Some(e), c)
@@ -287,7 +291,7 @@ fn solve_with(
             };
             // Only a level its cycles converged: a refined level's Newton-Krylov finish costs
             // 4-5 s a step at level 8 and converges linearly there (docs/SOLVER.md).
-            let missed = match (&params.accuracy, &errors) {
+            let missed = match (&params.accuracy.target, &errors) {
                 (Some(target), Some(e)) => method == Method::Cycles && !target.met_by(e, g.m),
                 _ => false,
             };
@@ -321,7 +325,7 @@ fn solve_with(
         delta,
         film,
         friction,
-        friction_region: params.friction_region,
+        friction_region: params.friction.region,
         info: Info {
             level,
             method,

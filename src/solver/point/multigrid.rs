@@ -54,13 +54,13 @@ impl Hierarchy {
         let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity)
             .with_surround(surround.cloned());
         let mut mg = Hierarchy::new(model, far, &params.domain, params, h0);
-        mg.rolling_scale = params.rolling_friction.then(|| g.rolling_stress_scale());
+        mg.rolling_scale = params.friction.rolling.then(|| g.rolling_stress_scale());
         mg
     }
 
-    /// Builds every level from `params.coarsest_level` to `params.level` on `domain`.
+    /// Builds every level from `params.multigrid.coarsest_level` to `params.level` on `domain`.
     pub fn new(model: Model, far: FarField, domain: &Domain, params: &Params, h0: f64) -> Self {
-        let levels = (params.coarsest_level..=params.level)
+        let levels = (params.multigrid.coarsest_level..=params.level)
             .map(|l| Level::new(Grid::level(domain, l), &model))
             .collect();
         Hierarchy {
@@ -70,7 +70,7 @@ impl Hierarchy {
             h0,
             rolling_scale: None,
             warm: false,
-            gain: params.force_balance_gain,
+            gain: params.multigrid.force_balance_gain,
             last_defect: 0.0,
             scratch: LineScratch::new(),
             params: params.clone(),
@@ -87,7 +87,7 @@ impl Hierarchy {
 
     /// Sets the relaxations per visit of the coarsest grid; returns the previous number.
     pub fn set_coarsest_sweeps(&mut self, sweeps: usize) -> usize {
-        std::mem::replace(&mut self.params.coarsest_sweeps, sweeps)
+        std::mem::replace(&mut self.params.multigrid.coarsest_sweeps, sweeps)
     }
 
     pub fn finest(&self) -> &Level {
@@ -109,7 +109,7 @@ impl Hierarchy {
         if defect * self.last_defect < 0.0 {
             self.gain *= 0.5;
         } else {
-            self.gain = (self.gain * 1.1).min(self.params.force_balance_gain);
+            self.gain = (self.gain * 1.1).min(self.params.multigrid.force_balance_gain);
         }
         self.last_defect = defect;
         self.h0 += self.gain * defect;
@@ -118,8 +118,8 @@ impl Hierarchy {
     /// Solves the coarsest level by many sweeps, with a force-balance update after each
     /// group of sweeps.
     fn solve_coarsest(&mut self) {
-        let groups = self.params.coarsest_force_updates.max(1);
-        let per_group = self.params.coarsest_sweeps.div_ceil(groups);
+        let groups = self.params.multigrid.coarsest_force_updates.max(1);
+        let per_group = self.params.multigrid.coarsest_sweeps.div_ceil(groups);
         for _ in 0..groups {
             for _ in 0..per_group {
                 self.relax(0);
@@ -134,7 +134,7 @@ impl Hierarchy {
             self.solve_coarsest();
             return;
         }
-        for _ in 0..self.params.pre_sweeps {
+        for _ in 0..self.params.multigrid.pre_sweeps {
             self.relax(k);
         }
         {
@@ -143,14 +143,14 @@ impl Hierarchy {
             fine.refresh(self.h0, &self.model);
             coarsen(fine, &mut lo[k - 1], &self.model, self.h0);
         }
-        for _ in 0..self.params.gamma {
+        for _ in 0..self.params.multigrid.gamma {
             self.cycle(k - 1);
         }
         {
             let (lo, hi) = self.levels.split_at_mut(k);
             correct(&lo[k - 1], &mut hi[0]);
         }
-        for _ in 0..self.params.post_sweeps {
+        for _ in 0..self.params.multigrid.post_sweeps {
             self.relax(k);
         }
     }

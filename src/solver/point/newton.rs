@@ -23,6 +23,7 @@
 
 use super::jacobian::{wedge_weights, Jacobian};
 use super::level::{Level, Model, LOAD};
+use super::params::{NewtonParams, StoppingParams};
 use crate::solver::bordered_lu::{BorderedLu, LuStorage};
 use crate::solver::{gmres, line_search};
 
@@ -92,27 +93,6 @@ pub(crate) struct Step {
     pub krylov_iterations: usize,
 }
 
-/// When [`iterate`] stops, and how it solves its linear systems.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Limits {
-    /// Most Newton steps.
-    pub steps: usize,
-    /// Mean absolute Reynolds residual to reach.
-    pub tolerance: f64,
-    /// Relative force-balance error to reach.
-    pub load_tolerance: f64,
-    /// Half-width in cells of the kernel box the preconditioner keeps (at least 2, which
-    /// holds every local stencil entry).
-    pub box_radius: usize,
-    /// GMRES vectors kept before a restart.
-    pub krylov_restart: usize,
-    /// Most GMRES iterations per Newton step.
-    pub krylov_iterations: usize,
-    /// The forcing term of the first step ([`FIRST_FORCING`], or [`warm_first_forcing`]
-    /// from a warm start).
-    pub first_forcing: f64,
-}
-
 /// Eisenstat and Walker's (1996) forcing term, their choice 2 with `gamma = 0.9`,
 /// `alpha = 2` and its safeguard: the linear systems are solved loosely while the Newton
 /// residual falls slowly and ever more tightly as it converges, which keeps the quadratic
@@ -130,13 +110,16 @@ fn forcing(previous: f64, norm: f64, norm_before: f64) -> f64 {
 }
 
 /// Newton steps on `level` (its own equations: the top of the hierarchy) from its current
-/// pressure and `h0` until both tolerances are met, within `limits`. `report` hears of
-/// every step.
+/// pressure and `h0` until both tolerances of `stopping` are met, within `newton`'s steps;
+/// the first step's forcing term is `first_forcing` ([`FIRST_FORCING`], or
+/// [`warm_first_forcing`] from a warm start). `report` hears of every step.
 pub(crate) fn iterate(
     level: &mut Level,
     model: &Model,
     h0: &mut f64,
-    limits: &Limits,
+    newton: &NewtonParams,
+    stopping: &StoppingParams,
+    first_forcing: f64,
     report: &mut dyn FnMut(&Level, &Step),
 ) -> Outcome {
     let g = level.grid;
@@ -147,7 +130,7 @@ pub(crate) fn iterate(
     level.refresh(*h0, model);
     let mut scale = row_scales(level);
     let mut ev = evaluate(level, model, *h0, &scale);
-    let mut eta = limits.first_forcing;
+    let mut eta = first_forcing;
     let mut norm_before = f64::NAN;
     let mut stalled = 0;
     // The factorisation's arrays, kept from one step to the next; and the last step's
@@ -159,7 +142,7 @@ pub(crate) fn iterate(
         iterations: 0,
         krylov_iterations: 0,
     };
-    for it in 1..=limits.steps {
+    for it in 1..=newton.steps {
         if it > 1 {
             eta = forcing(eta, ev.norm, norm_before);
         }
@@ -191,7 +174,7 @@ pub(crate) fn iterate(
             Some(lu) => lu,
             None => match jac.preconditioner(
                 level,
-                limits.box_radius,
+                newton.box_radius,
                 true,
                 std::mem::take(&mut storage),
             ) {
@@ -203,15 +186,11 @@ pub(crate) fn iterate(
         let mut rhs: Vec<f64> = jac.active.iter().map(|&k| -ev.phi[k]).collect();
         rhs.push(-ev.load);
         let mut step = vec![0.0; n];
-        let gmres_params = gmres::Params {
-            restart: limits.krylov_restart,
-            max_iterations: limits.krylov_iterations,
-            tolerance: eta,
-        };
         let mut krylov = gmres::solve(
             &rhs,
             &mut step,
-            &gmres_params,
+            &newton.krylov,
+            eta,
             |v, out| jac.apply(level, v, out),
             |v, out| preconditioner.solve(v, out),
         );
@@ -225,7 +204,7 @@ pub(crate) fn iterate(
             outcome.krylov_iterations += krylov.iterations;
             preconditioner = match jac.preconditioner(
                 level,
-                limits.box_radius,
+                newton.box_radius,
                 true,
                 preconditioner.into_storage(),
             ) {
@@ -235,7 +214,8 @@ pub(crate) fn iterate(
             krylov = gmres::solve(
                 &rhs,
                 &mut step,
-                &gmres_params,
+                &newton.krylov,
+                eta,
                 |v, out| jac.apply(level, v, out),
                 |v, out| preconditioner.solve(v, out),
             );
@@ -283,7 +263,7 @@ pub(crate) fn iterate(
         if !residual.is_finite() {
             return outcome;
         }
-        if residual < limits.tolerance && load_error < limits.load_tolerance {
+        if residual < stopping.tolerance && load_error < stopping.load_tolerance {
             outcome.converged = true;
             return outcome;
         }

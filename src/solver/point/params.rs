@@ -2,6 +2,7 @@
 
 use super::{stopping, FrictionRegion};
 use crate::physics::case::Problem;
+pub use crate::solver::gmres::KrylovParams;
 use crate::solver::grid::Domain;
 use crate::solver::richardson::ERROR_LEVELS;
 
@@ -11,29 +12,68 @@ pub enum Edge {
     /// `P = 0`, the paper's.
     Zero,
     /// The flooded inlet's asymptote, its amplitude fixed a priori from `lambda`, and the
-    /// load it carries outside taken off the force balance ([`far_field`]).
+    /// load it carries outside taken off the force balance (the `far_field` module).
     FarField,
     /// [`Edge::FarField`] with its amplitude fitted to the solution a few cells inside the
     /// edge, before each finest cycle and between Newton-Krylov solves.
     FittedFarField,
 }
 
-/// Solver parameters, with the defaults of the paper's working resolution.
+/// Solver parameters, nested by stage, with the defaults of the paper's working resolution.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Params {
     /// Finest level: `2^(level+1)` intervals per direction. Default 7 (256 x 256).
     pub level: u32,
-    /// Coarsest level of the hierarchy (lowered to `level` if above it). Default 4
-    /// (32 x 32): at the paper's heaviest loads a 16 x 16 grid no longer represents the smooth
-    /// error and the cycles slow down (Table 4 case, level 7: 33 V-cycles from level 3, 20
-    /// from level 4).
-    pub coarsest_level: u32,
     /// Computational domain.
     pub domain: Domain,
     /// The condition on the domain's edge ([`Edge`]). Default [`Edge::Zero`], the paper's
     /// `P = 0`, for studies of the numerics on a fixed domain; a case is solved with the
     /// far field of the a-priori amplitude, [`Edge::FarField`] ([`Params::for_problem`]).
     pub edge: Edge,
+    /// Solve on a chain of nested domains inside `domain` ([`super::chain`]): the case-sized
+    /// domain, then rectangles each a third of the one around it down to the contact's core,
+    /// every one at `level`. Default false; the rule sets it where the domain has rectangles
+    /// ([`Params::for_problem`]); a domain without any (an expert's `--domain`, Fig. 6's
+    /// paper setup) is solved alone.
+    pub nested: bool,
+    /// The multigrid cycles (`cycles`, `multigrid`).
+    pub multigrid: MultigridParams,
+    /// When a level is converged (`stopping`, and the Newton-Krylov finish).
+    pub stopping: StoppingParams,
+    /// The Newton-Krylov finish (`finish`, `newton`) where the cycles stall, diverge or run
+    /// out.
+    pub newton: NewtonParams,
+    /// How the friction is integrated (`friction`).
+    pub friction: FrictionParams,
+    /// The discretisation error: its estimate, the refinement that meets a target, and the
+    /// film check (`ladder`, `refine`).
+    pub accuracy: AccuracyParams,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            level: 7,
+            domain: Domain::default(),
+            edge: Edge::Zero,
+            nested: false,
+            multigrid: MultigridParams::default(),
+            stopping: StoppingParams::default(),
+            newton: NewtonParams::default(),
+            friction: FrictionParams::default(),
+            accuracy: AccuracyParams::default(),
+        }
+    }
+}
+
+/// The multigrid cycles (`cycles`, `multigrid`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct MultigridParams {
+    /// Coarsest level of the hierarchy (lowered to `level` if above it). Default 4
+    /// (32 x 32): at the paper's heaviest loads a 16 x 16 grid no longer represents the smooth
+    /// error and the cycles slow down (Table 4 case, level 7: 33 V-cycles from level 3, 20
+    /// from level 4).
+    pub coarsest_level: u32,
     /// Relaxations before coarsening. Default 2.
     pub pre_sweeps: usize,
     /// Relaxations after the correction. Default 1.
@@ -60,44 +100,6 @@ pub struct Params {
     /// but the most heavily loaded cases of Table 2 (M ~ 1e4) converge at about 0.85 per
     /// cycle and need 50-70.
     pub max_cycles: usize,
-    /// Convergence: the mean absolute Reynolds residual on the finest level. Default 1e-6.
-    /// The Newton-Krylov finish stops on it; the cycles, where the outputs' rule is on
-    /// ([`Params::output_tolerance`]), only with settled outputs: a heavy contact's
-    /// side-lobe minimum film converges far more slowly than the mean residual falls (Fig. 4,
-    /// mineral oil A at 100 C, 3 GPa, 7 m/s, M 7 506, level 7: residual 8e-7 after 22 cycles
-    /// with `Hmin` 2 % off, its estimated error 17 %).
-    pub tolerance: f64,
-    /// Convergence, alternatively, where the outputs' rule is off: the mean absolute change
-    /// of `P` over one finest cycle. On fine grids the residual can stall at a few nodes of
-    /// tiny pressure on the cavitation boundary that flip in and out of it every cycle, with
-    /// no effect on any output; the pressure change still measures the iteration error.
-    /// Default 3e-7, which leaves the Table 4 film within 1e-4 (level 7) and 2e-5 (level 8)
-    /// of its converged value.
-    pub pressure_tolerance: f64,
-    /// Convergence: relative force-balance error. Default 1e-4.
-    pub load_tolerance: f64,
-    /// Convergence, alternatively: the estimated relative algebraic error of the central
-    /// film, the minimum film and the sliding and rolling friction ([`stopping`]). Default 5e-4, a
-    /// hundredth of level 7's discretisation error in the film; 0 stops on the residual
-    /// or the pressure change alone.
-    pub output_tolerance: f64,
-    /// Most Newton steps on each level of the Newton-Krylov finish ([`newton`]) that takes
-    /// over when the cycles stall, diverge or run out; 0 turns the finish off. Default 30:
-    /// the 5P4E hard case converges in 8-15 per level.
-    pub newton_steps: usize,
-    /// Level at which the finish's grid sequence starts (clamped to the hierarchy): the
-    /// finish converges there, from that level's own cycles, then on each finer level from
-    /// the interpolated solution of the one below, never from the stalled or diverged
-    /// state of the finest cycles. Default 5 (64 x 64): there the cycles of the hardest
-    /// cases stall rather than diverge, and a Newton step costs milliseconds.
-    pub newton_start_level: u32,
-    /// Half-width in cells of the box of elastic-kernel entries the finish's sparse
-    /// preconditioner keeps. Default 2 (5 x 5): the feasibility study of the 5P4E Newton
-    /// systems measured 8 GMRES iterations to 1e-2 at level 7 with it, none converging with
-    /// a 3 x 3 box.
-    pub box_radius: usize,
-    /// Most GMRES iterations per Newton step. Default 200.
-    pub krylov_iterations: usize,
     /// Cycles without the residual halving after which the cycles are taken as stalled and
     /// the Newton-Krylov finish starts. Default 15.
     pub stall_cycles: usize,
@@ -112,49 +114,12 @@ pub struct Params {
     /// give Newton-Krylov a start and a Newton step costs about what a cycle does. Default 5:
     /// on the 5P4E cases they stall after about 8 cycles and ran 30 more at 15 ms with 15.
     pub sequence_stall_cycles: usize,
-    /// Where the friction is integrated ([`FrictionRegion`]). Default the whole domain (the
-    /// paper's Eq. 8), for studies of the numerics; a case is solved with the loaded film,
-    /// which goes with the far field ([`Params::for_problem`]).
-    pub friction_region: FrictionRegion,
-    /// Compute the rolling (Poiseuille) part of the friction. Default true.
-    pub rolling_friction: bool,
-    /// Fail with [`SolveError::FilmCollapse`] when the minimum film is not positive (after
-    /// the refinements below). Default true; Table 4 turns it off at level 5, where the
-    /// paper itself reports a film an order of magnitude too thin.
-    pub require_positive_film: bool,
-    /// Finer levels the solver may add, one at a time, while the converged film is not
-    /// positive (friction is never computed on a closed gap) or the outputs' estimated error
-    /// misses [`Params::accuracy`]. Default 1: level 8 opens the film of the heaviest Table 2
-    /// loads that close at level 7 (M up to ~11 000). The level solved on is reported in
-    /// [`Info::level`].
-    pub refinement_levels: u32,
-    /// The estimated discretisation errors the solve refines its grid to meet, within
-    /// [`Params::refinement_levels`] ([`super::AccuracyTarget`]; needs [`Params::error_levels`]).
-    /// Default none (studies of the numerics solve the level they are given); the rule sets 1 %
-    /// in friction ([`super::AccuracyTarget::FRICTION`]), which takes 448 of the paper's 1 369
-    /// solves to level 8 and 929 of the 980 rows of Figs. 1 and 3-7 within 1 %, at 1.53 times
-    /// its CPU and wall time (docs/ACCURACY_NOTES.md, "Refinement to a target").
-    pub accuracy: Option<super::AccuracyTarget>,
-    /// Coarser levels solved on their own after the finest, for the outputs' discretisation
-    /// error ([`crate::solver::richardson`], the `ladder` module); 0 for none. Default 0 (studies of
-    /// the numerics solve their levels themselves); a case is solved with 2, the three levels
-    /// an observed order needs ([`Params::for_problem`]).
-    pub error_levels: u32,
-    /// Solve on a chain of nested domains inside `domain` ([`super::chain`]): the case-sized
-    /// domain, then rectangles each a third of the one around it down to the contact's core,
-    /// every one at `level`. Default false; the rule sets it where the domain has rectangles
-    /// ([`Params::for_problem`]); a domain without any (an expert's `--domain`, Fig. 6's
-    /// paper setup) is solved alone.
-    pub nested: bool,
 }
 
-impl Default for Params {
+impl Default for MultigridParams {
     fn default() -> Self {
-        Params {
-            level: 7,
+        MultigridParams {
             coarsest_level: 4,
-            domain: Domain::default(),
-            edge: Edge::Zero,
             pre_sweeps: 2,
             post_sweeps: 1,
             coarsest_sweeps: 50,
@@ -163,27 +128,149 @@ impl Default for Params {
             gamma: 1,
             fmg_cycles: 2,
             max_cycles: 80,
+            stall_cycles: 15,
+            early_stall_cycles: 6,
+            sequence_stall_cycles: 5,
+        }
+    }
+}
+
+/// When a level is converged (`stopping`, and the Newton-Krylov finish).
+#[derive(Debug, Clone, PartialEq)]
+pub struct StoppingParams {
+    /// Convergence: the mean absolute Reynolds residual on the finest level. Default 1e-6.
+    /// The Newton-Krylov finish stops on it; the cycles, where the outputs' rule is on
+    /// ([`StoppingParams::output_tolerance`]), only with settled outputs: a heavy contact's
+    /// side-lobe minimum film converges far more slowly than the mean residual falls (Fig. 4,
+    /// mineral oil A at 100 C, 3 GPa, 7 m/s, M 7 506, level 7: residual 8e-7 after 22 cycles
+    /// with `Hmin` 2 % off, its estimated error 17 %).
+    pub tolerance: f64,
+    /// Convergence, alternatively, where the outputs' rule is off: the mean absolute change
+    /// of `P` over one finest cycle. On fine grids the residual can stall at a few nodes of
+    /// tiny pressure on the cavitation boundary that flip in and out of it every cycle, with
+    /// no effect on any output; the pressure change still measures the iteration error.
+    /// Default 3e-7, which leaves the Table 4 film within 1e-4 (level 7) and 2e-5 (level 8)
+    /// of its converged value.
+    pub pressure_tolerance: f64,
+    /// Convergence: relative force-balance error. Default 1e-4.
+    pub load_tolerance: f64,
+    /// Convergence, alternatively: the estimated relative algebraic error of the central film, the
+    /// minimum film and the sliding and rolling friction (the `stopping` module). Default 5e-4, a
+    /// hundredth of level 7's discretisation error in the film; 0 stops on the residual or the
+    /// pressure change alone.
+    pub output_tolerance: f64,
+}
+
+impl Default for StoppingParams {
+    fn default() -> Self {
+        StoppingParams {
             tolerance: 1e-6,
             pressure_tolerance: 3e-7,
             load_tolerance: 1e-4,
             output_tolerance: stopping::OUTPUT_TOLERANCE,
-            newton_steps: 30,
-            newton_start_level: 5,
-            box_radius: 2,
-            krylov_iterations: 200,
-            stall_cycles: 15,
-            early_stall_cycles: 6,
-            sequence_stall_cycles: 5,
-            friction_region: FrictionRegion::Domain,
-            rolling_friction: true,
-            require_positive_film: true,
-            refinement_levels: 1,
-            accuracy: None,
-            error_levels: 0,
-            nested: false,
         }
     }
 }
+
+/// The Newton-Krylov finish (`finish`, `newton`) where the cycles stall, diverge or run out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NewtonParams {
+    /// Most Newton steps on each level of the Newton-Krylov finish (the `newton` module) that takes
+    /// over when the cycles stall, diverge or run out; 0 turns the finish off. Default 30:
+    /// the 5P4E hard case converges in 8-15 per level.
+    pub steps: usize,
+    /// Level at which the finish's grid sequence starts (clamped to the hierarchy): the
+    /// finish converges there, from that level's own cycles, then on each finer level from
+    /// the interpolated solution of the one below, never from the stalled or diverged
+    /// state of the finest cycles. Default 5 (64 x 64): there the cycles of the hardest
+    /// cases stall rather than diverge, and a Newton step costs milliseconds.
+    pub start_level: u32,
+    /// Half-width in cells of the box of elastic-kernel entries the finish's sparse
+    /// preconditioner keeps. Default 2 (5 x 5): the feasibility study of the 5P4E Newton
+    /// systems measured 8 GMRES iterations to 1e-2 at level 7 with it, none converging with
+    /// a 3 x 3 box.
+    pub box_radius: usize,
+    /// The GMRES solves of its linear systems.
+    pub krylov: KrylovParams,
+}
+
+impl Default for NewtonParams {
+    fn default() -> Self {
+        NewtonParams {
+            steps: 30,
+            start_level: 5,
+            box_radius: 2,
+            krylov: KrylovParams {
+                restart: KRYLOV_RESTART,
+                max_iterations: 200,
+            },
+        }
+    }
+}
+
+/// How the friction is integrated (`friction`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionParams {
+    /// Where the friction is integrated ([`FrictionRegion`]). Default the whole domain (the
+    /// paper's Eq. 8), for studies of the numerics; a case is solved with the loaded film,
+    /// which goes with the far field ([`Params::for_problem`]).
+    pub region: FrictionRegion,
+    /// Compute the rolling (Poiseuille) part of the friction. Default true.
+    pub rolling: bool,
+}
+
+impl Default for FrictionParams {
+    fn default() -> Self {
+        FrictionParams {
+            region: FrictionRegion::Domain,
+            rolling: true,
+        }
+    }
+}
+
+/// The discretisation error: its estimate, the refinement that meets a target, and the film
+/// check (`ladder`, `refine`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct AccuracyParams {
+    /// Coarser levels solved on their own after the finest, for the outputs' discretisation error
+    /// ([`crate::solver::richardson`], the `ladder` module); 0 for none. Default 0 (studies of the
+    /// numerics solve their levels themselves); a case is solved with 2, the three levels an
+    /// observed order needs ([`Params::for_problem`]).
+    pub error_levels: u32,
+    /// The estimated discretisation errors the solve refines its grid to meet, within
+    /// [`AccuracyParams::refinement_levels`] ([`super::AccuracyTarget`]; needs
+    /// [`AccuracyParams::error_levels`]).
+    /// Default none (studies of the numerics solve the level they are given); the rule sets 1 %
+    /// in friction ([`super::AccuracyTarget::FRICTION`]), which takes 448 of the paper's 1 369
+    /// solves to level 8 and 929 of the 980 rows of Figs. 1 and 3-7 within 1 %, at 1.53 times
+    /// its CPU and wall time (docs/ACCURACY_NOTES.md, "Refinement to a target").
+    pub target: Option<super::AccuracyTarget>,
+    /// Finer levels the solver may add, one at a time, while the converged film is not
+    /// positive (friction is never computed on a closed gap) or the outputs' estimated error
+    /// misses [`AccuracyParams::target`]. Default 1: level 8 opens the film of the heaviest
+    /// Table 2 loads that close at level 7 (M up to ~11 000). The level solved on is reported in
+    /// [`super::Info::level`].
+    pub refinement_levels: u32,
+    /// Fail with [`SolveError::FilmCollapse`] when the minimum film is not positive (after
+    /// the refinements above). Default true; Table 4 turns it off at level 5, where the
+    /// paper itself reports a film an order of magnitude too thin.
+    pub require_positive_film: bool,
+}
+
+impl Default for AccuracyParams {
+    fn default() -> Self {
+        AccuracyParams {
+            error_levels: 0,
+            target: None,
+            refinement_levels: 1,
+            require_positive_film: true,
+        }
+    }
+}
+
+/// GMRES vectors kept before a restart: more than the preconditioned systems need (the
+/// feasibility study: 20 iterations to 1e-6 at level 7), so restarts are rare.
+const KRYLOV_RESTART: usize = 60;
 
 impl Params {
     /// Default parameters at `level`, on the paper's domain whatever the case: for tests and
@@ -195,34 +282,38 @@ impl Params {
         }
     }
 
-    /// THE rule from a case to its solver parameters, which every command and pipeline uses
-    /// (`repro solve`, `repro predict --solve`, the figure sweeps and studies, Table 4, the
-    /// accuracy study, shards and benchmarks): the defaults at `level` on the domain the
-    /// problem calls for ([`Domain::for_problem`]), with the flooded inlet's far field on its
-    /// edge ([`Edge::FarField`]) and the friction of the loaded film
-    /// ([`FrictionRegion::LoadedFilm`]), so that neither the film nor the friction depends on
-    /// where the domain ends (`docs/DOMAIN_NOTES.md`), and on a chain of nested domains where
-    /// the case-sized domain reaches far beyond the contact ([`Params::nested`]: the light
-    /// contacts, whose uniform grid is 3-5 times coarser in the contact than the paper's),
-    /// refined one level where the sliding friction's estimated error misses 1 %
-    /// ([`Params::accuracy`]). The far field's amplitude is the
-    /// a-priori one: the domain keeps the load outside below 8 %, where fitting it moved
-    /// film and friction by 0.05 % or less at level 7 on M 1, 5 and 50 and on Fig. 6 case 23;
-    /// at M 20, L 30 by 0.4 % and 0.7 %, and there the a-priori edge is the better converged
-    /// in the domain (doubling it moves film and friction 0.15 % and 0.17 %, the fitted
-    /// 0.21 % and 0.49 %); the refits cost up to three times the solve. A path that needs a different
-    /// parameter (Table 4's film check at level 5, an expert's `--domain`) sets it on top of
-    /// this.
+    /// THE rule from a case to its solver parameters, which every command and pipeline uses (`repro
+    /// solve`, `repro predict --solve`, the figure sweeps and studies, Table 4, the accuracy study,
+    /// shards and benchmarks): the defaults at `level` on the domain the problem calls for
+    /// ([`Domain::for_problem`]), with the flooded inlet's far field on its edge
+    /// ([`Edge::FarField`]) and the friction of the loaded film ([`FrictionRegion::LoadedFilm`]),
+    /// so that neither the film nor the friction depends on where the domain ends
+    /// (`docs/DOMAIN_NOTES.md`), and on a chain of nested domains where the case-sized domain
+    /// reaches far beyond the contact ([`Params::nested`]: the light contacts, whose uniform grid
+    /// is 3-5 times coarser in the contact than the paper's), refined one level where the sliding
+    /// friction's estimated error misses 1 % ([`AccuracyParams::target`]). The far field's
+    /// amplitude is the a-priori one: the domain keeps the load outside below 8 %, where fitting it
+    /// moved film and friction by 0.05 % or less at level 7 on M 1, 5 and 50 and on Fig. 6 case 23;
+    /// at M 20, L 30 by 0.4 % and 0.7 %, and there the a-priori edge is the better converged in the
+    /// domain (doubling it moves film and friction 0.15 % and 0.17 %, the fitted 0.21 % and 0.49
+    /// %); the refits cost up to three times the solve. A path that needs a different parameter
+    /// (Table 4's film check at level 5, an expert's `--domain`) sets it on top of this.
     pub fn for_problem(problem: &Problem, level: u32) -> Self {
         let domain = Domain::for_problem(problem);
         Params {
             level,
             domain,
             edge: Edge::FarField,
-            friction_region: FrictionRegion::LoadedFilm,
-            error_levels: ERROR_LEVELS,
             nested: !super::chain::rectangles(&domain).is_empty(),
-            accuracy: Some(super::AccuracyTarget::FRICTION),
+            friction: FrictionParams {
+                region: FrictionRegion::LoadedFilm,
+                ..FrictionParams::default()
+            },
+            accuracy: AccuracyParams {
+                error_levels: ERROR_LEVELS,
+                target: Some(super::AccuracyTarget::FRICTION),
+                ..AccuracyParams::default()
+            },
             ..Params::default()
         }
     }

@@ -13,8 +13,8 @@ use super::Params;
 use crate::solver::output::{Method, Output, OutputErrors, Progress, SolveError};
 use serde::Serialize;
 
-/// The discretisation errors a case's solve refines its grid to meet, relative to each
-/// output's own value, within [`Params::refinement_levels`], where the level converged by its
+/// The discretisation errors a case's solve refines its grid to meet, relative to each output's own
+/// value, within [`super::AccuracyParams::refinement_levels`], where the level converged by its
 /// cycles: the sliding `mu-bar` the paper's curve is about, and optionally the central film.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct AccuracyTarget {
@@ -29,12 +29,12 @@ impl AccuracyTarget {
     /// The Moes load from which the heavy contacts' film bound applies.
     pub const HEAVY_M: f64 = 5000.0;
 
-    /// The rule's ([`Params::for_problem`]): 1 % in friction. The film is not a target: with issue 39's film bounds
-    /// (2 %, 5 % from M 5 000 up) as well, one level of refinement took 870 of the cold
-    /// paper's first 1 284 solves to level 8 and left 370 of them above the film bound
-    /// (the film converges at first order where the piezoviscous flank is not resolved,
-    /// docs/ACCURACY_NOTES.md), and the run was stopped unfinished after 2.4 times the
-    /// paper's whole wall time.
+    /// The rule's ([`Params::for_problem`]): 1 % in friction. The film is not a target: with issue
+    /// 39's film bounds (2 %, 5 % from M 5 000 up) as well, one level of refinement took 870 of the
+    /// cold paper's first 1 284 solves to level 8 and left 370 of them above the film bound (the
+    /// film converges at first order where the piezoviscous flank is not resolved,
+    /// docs/ACCURACY_NOTES.md), and the run was stopped unfinished after 2.4 times the paper's
+    /// whole wall time.
     pub const FRICTION: AccuracyTarget = AccuracyTarget {
         mu_bar_sliding: 0.01,
         h_central: None,

@@ -8,10 +8,10 @@ use super::stopping::Known;
 use super::Params;
 use crate::solver::output::Progress;
 
-/// The Newton-Krylov finish, grid-sequenced: level `newton_start_level` converged from
-/// its state in `starts` (its cycles, then Newton where they stall), then Newton on each
-/// finer level from the interpolated solution of the one below ([`converge_level`]), counted
-/// in `tally`. Whether the finest level converged.
+/// The Newton-Krylov finish, grid-sequenced: level [`super::NewtonParams::start_level`] converged
+/// from its state in `starts` (its cycles, then Newton where they stall), then Newton on each finer
+/// level from the interpolated solution of the one below ([`converge_level`]), counted in `tally`.
+/// Whether the finest level converged.
 pub(super) fn grid_sequence(
     mg: &mut Hierarchy,
     starts: &[State],
@@ -21,9 +21,10 @@ pub(super) fn grid_sequence(
 ) -> bool {
     let top = mg.levels.len() - 1;
     let first = (params
-        .newton_start_level
-        .clamp(params.coarsest_level, params.level)
-        - params.coarsest_level) as usize;
+        .newton
+        .start_level
+        .clamp(params.multigrid.coarsest_level, params.level)
+        - params.multigrid.coarsest_level) as usize;
     // The saved state first, then its level made the top: the far-field edge follows the
     // restored film constant.
     starts[first].restore(mg, first);
@@ -41,8 +42,8 @@ pub(super) fn grid_sequence(
         let how = How {
             cycles: k == first && first < top,
             windows: StallWindows {
-                stall: params.sequence_stall_cycles,
-                early: params.early_stall_cycles,
+                stall: params.multigrid.sequence_stall_cycles,
+                early: params.multigrid.early_stall_cycles,
             },
             known: &known,
         };

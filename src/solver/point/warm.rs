@@ -77,14 +77,14 @@ impl Start {
 /// `params` on `level` (a base refined to a finer level than asked), with the refinements
 /// left to it.
 pub(super) fn params_at(params: &Params, level: u32) -> Params {
-    Params {
-        level,
-        coarsest_level: params.coarsest_level.min(level),
-        refinement_levels: params
-            .refinement_levels
-            .saturating_sub(level - params.level),
-        ..params.clone()
-    }
+    let mut at = params.clone();
+    at.level = level;
+    at.multigrid.coarsest_level = params.multigrid.coarsest_level.min(level);
+    at.accuracy.refinement_levels = params
+        .accuracy
+        .refinement_levels
+        .saturating_sub(level - params.level);
+    at
 }
 
 /// Converges `problem` on `start`'s level from it (module documentation); `None` where it

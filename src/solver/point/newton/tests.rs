@@ -150,11 +150,11 @@ fn krylov(
     let out = gmres::solve(
         b,
         &mut x,
-        &gmres::Params {
+        &gmres::KrylovParams {
             restart: 50,
             max_iterations: 400,
-            tolerance,
         },
+        tolerance,
         |v, o| jac.apply(level, v, o),
         |v, o| pc.solve(v, o),
     );
@@ -168,18 +168,39 @@ fn a_step_does_not_depend_on_the_coefficients_left_on_the_level() {
     let (mut stale, model, h0) = setup();
     let (mut current, _, _) = setup();
     current.update_coefficients(&model);
-    let limits = Limits {
+    let newton = NewtonParams {
         steps: 1,
+        box_radius: 2,
+        krylov: gmres::KrylovParams {
+            restart: 30,
+            max_iterations: 60,
+        },
+        ..NewtonParams::default()
+    };
+    let stopping = StoppingParams {
         tolerance: 0.0,
         load_tolerance: 0.0,
-        box_radius: 2,
-        krylov_restart: 30,
-        krylov_iterations: 60,
-        first_forcing: FIRST_FORCING,
+        ..StoppingParams::default()
     };
     let (mut a, mut b) = (h0, h0);
-    iterate(&mut stale, &model, &mut a, &limits, &mut |_, _| {});
-    iterate(&mut current, &model, &mut b, &limits, &mut |_, _| {});
+    iterate(
+        &mut stale,
+        &model,
+        &mut a,
+        &newton,
+        &stopping,
+        FIRST_FORCING,
+        &mut |_, _| {},
+    );
+    iterate(
+        &mut current,
+        &model,
+        &mut b,
+        &newton,
+        &stopping,
+        FIRST_FORCING,
+        &mut |_, _| {},
+    );
     assert_eq!((stale.p, a), (current.p, b));
 }
 
