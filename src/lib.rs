@@ -2,7 +2,7 @@
 //! Lugt, ASME J. Tribology 2001) from first principles.
 //!
 //! Layers, with one-way dependencies: `cli` (binary) -> [`report`] -> [`paper`] (one module
-//! per artefact of the paper, and their registry) -> [`pipeline`] (jobs, cache, executor,
+//! per target of the paper, and their registry) -> [`pipeline`] (jobs, cache, executor,
 //! files) and [`plot`] (the SVG kit) -> [`solver`] -> [`physics`]. The numerical kernel does
 //! no I/O.
 

@@ -4,7 +4,7 @@ use super::args::{CheckArgs, TargetArgs};
 use super::print::summary_line;
 use super::progress::in_context;
 use anyhow::Result;
-use repro::paper::{self, known, Artefact, REGISTRY};
+use repro::paper::{self, known, Target, REGISTRY};
 use repro::pipeline::snapshot::{self, PROFILE_LEVEL, PROFILE_STRIDE};
 use repro::report;
 
@@ -14,7 +14,7 @@ const SHOWN: usize = 40;
 /// `repro check`: false when a result differs from its baseline.
 pub fn run(args: &CheckArgs) -> Result<bool> {
     let all = args.targets.is_empty();
-    let artefacts: Vec<&dyn Artefact> = if all {
+    let targets: Vec<&dyn Target> = if all {
         REGISTRY.to_vec()
     } else {
         args.targets
@@ -37,9 +37,9 @@ pub fn run(args: &CheckArgs) -> Result<bool> {
         ctx.stride = PROFILE_STRIDE;
         let ctx = &*ctx;
         let built = if all {
-            report::build_all(&artefacts, ctx)?
+            report::build_all(&targets, ctx)?
         } else {
-            artefacts
+            targets
                 .iter()
                 .map(|a| paper::build(*a, ctx))
                 .collect::<Result<Vec<_>, _>>()?

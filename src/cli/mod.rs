@@ -26,7 +26,7 @@ use args::{Command, Invocation};
 /// solve that did not converge, a snapshot that differs), an error when it could not run.
 pub fn run(invocation: Invocation) -> Result<bool> {
     let command = match invocation {
-        Invocation::Target(artefact, a) => return target::one(artefact, &a),
+        Invocation::Target(target, a) => return target::one(target, &a),
         Invocation::Command(c) => c,
     };
     match command {

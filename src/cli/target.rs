@@ -8,7 +8,7 @@ use super::progress::in_context;
 use super::shard::{self, TargetJobs};
 use anyhow::{Context as _, Result};
 use repro::paper::table4;
-use repro::paper::{self, Artefact, REGISTRY};
+use repro::paper::{self, Target, REGISTRY};
 use repro::pipeline::context::Context;
 use repro::pipeline::csv::write_atomic;
 use repro::pipeline::executor::{run_jobs, RunProgress};
@@ -44,14 +44,14 @@ pub fn list() -> Result<bool> {
 }
 
 /// `repro <target>`.
-pub fn one(artefact: &dyn Artefact, args: &TargetArgs) -> Result<bool> {
-    let name = artefact.name();
+pub fn one(target: &dyn Target, args: &TargetArgs) -> Result<bool> {
+    let name = target.name();
     if let Some(s) = shard::detect(args)? {
         return shard::run(args, s, |ctx| target_jobs(&[name], ctx));
     }
     let built = in_context(args, true, |ctx| {
         check_offline(&[name], ctx)?;
-        Ok(paper::build(artefact, ctx)?)
+        Ok(paper::build(target, ctx)?)
     })?;
     println!("{}", summary_line(&built));
     Ok(true)

@@ -5,14 +5,14 @@
 //! by [`crate::physics::lubricant::LubricantTable::table1`], the Appendix case
 //! (`cases/table4.toml`) by [`crate::paper::table4::Table4Case::shipped`].
 
-use crate::paper::artefact::SweepFile;
+use crate::paper::target::ShippedSweep;
 use crate::paper::REGISTRY;
 use crate::pipeline::sweep::{Sweep, SweepError};
 
 /// The sweep files shipped in `cases/`: those the registry's targets draw
-/// ([`crate::paper::Artefact::sweep_file`]), each once, in the registry's order.
-pub fn shipped() -> Vec<SweepFile> {
-    let mut files: Vec<SweepFile> = Vec::new();
+/// ([`crate::paper::Target::sweep_file`]), each once, in the registry's order.
+pub fn shipped() -> Vec<ShippedSweep> {
+    let mut files: Vec<ShippedSweep> = Vec::new();
     for file in REGISTRY.iter().filter_map(|a| a.sweep_file()) {
         if !files.iter().any(|f| f.name == file.name) {
             files.push(file);

@@ -1,7 +1,7 @@
-//! The paper's artefacts: one module per table or figure (or study beyond the paper), each
+//! The paper's targets: one module per table or figure (or study beyond the paper), each
 //! with its cases, its computation and its picture, and the registry every command reads.
 //!
-//! An artefact is an [`Artefact`] (`artefact.rs`); [`REGISTRY`] lists them in the paper's
+//! A target is a [`Target`] (`target.rs`); [`REGISTRY`] lists them in the paper's
 //! order. `repro list`, the subcommands `repro <target>`, `repro all` (`make figures`),
 //! `repro check`, `repro slurm`, `--shard` and `--offline` all read it: adding a target is
 //! adding its module and one line here.
@@ -10,7 +10,6 @@
 //! [`accuracy`] (`repro accuracy`, the level study behind each target's default level).
 
 pub mod accuracy;
-pub mod artefact;
 pub mod cases;
 pub mod fig8;
 pub mod figures;
@@ -20,17 +19,18 @@ pub mod picture;
 pub mod prediction;
 pub mod table4;
 pub mod tables;
+pub mod target;
 pub mod thermal;
 
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
 use crate::pipeline::provenance::{Provenance, SUFFIX};
-pub use artefact::{Artefact, TargetReport};
 use std::time::Instant;
+pub use target::{Target, TargetReport};
 
 /// Every target, in the paper's order.
-pub static REGISTRY: &[&dyn Artefact] = &[
+pub static REGISTRY: &[&dyn Target] = &[
     &tables::Table1,
     &tables::Table2,
     &tables::Table3,
@@ -49,12 +49,12 @@ pub static REGISTRY: &[&dyn Artefact] = &[
 ];
 
 /// The target named `name`.
-pub fn find(name: &str) -> Option<&'static dyn Artefact> {
+pub fn find(name: &str) -> Option<&'static dyn Target> {
     REGISTRY.iter().copied().find(|a| a.name() == name)
 }
 
 /// The target named `name`, or an error that says which targets there are.
-pub fn known(name: &str) -> Result<&'static dyn Artefact, PipelineError> {
+pub fn known(name: &str) -> Result<&'static dyn Target, PipelineError> {
     find(name).ok_or_else(|| {
         let known: Vec<&str> = REGISTRY.iter().map(|a| a.name()).collect();
         PipelineError::UnknownTarget {
@@ -75,13 +75,13 @@ pub fn jobs_of(names: &[&str], ctx: &Context) -> Result<Vec<(String, Job)>, Pipe
     Ok(out)
 }
 
-/// Builds `artefact`, timed, with its provenance sidecar (the targets that solve nothing get
+/// Builds `target`, timed, with its provenance sidecar (the targets that solve nothing get
 /// one that says so).
-pub fn build(artefact: &dyn Artefact, ctx: &Context) -> Result<TargetReport, PipelineError> {
+pub fn build(target: &dyn Target, ctx: &Context) -> Result<TargetReport, PipelineError> {
     let start = Instant::now();
-    let mut report = artefact.build(ctx)?;
+    let mut report = target.build(ctx)?;
     if !report.files.iter().any(|f| f.ends_with(SUFFIX)) {
-        let name = artefact.name();
+        let name = target.name();
         let sidecar = Provenance::new(name, &report.files).to_json();
         report
             .files

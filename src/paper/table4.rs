@@ -1,8 +1,8 @@
 //! Table 4: variation of the central film `H = h/c` and of the sliding reduced friction with
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
-use crate::paper::artefact::{Artefact, TargetReport};
 use crate::paper::mastercurve::fit::{eq13_mu_bar, implied_c, PAPER_C};
+use crate::paper::target::{Target, TargetReport};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::cache::{key_of, Stamp};
@@ -188,7 +188,7 @@ pub fn compute_cached(
 /// cache (`repro table4` measures the wall times one level after the other instead).
 pub struct Table4;
 
-impl Artefact for Table4 {
+impl Target for Table4 {
     fn name(&self) -> &'static str {
         "table4"
     }

@@ -1,7 +1,7 @@
 //! Tables 1-3: emitted from `cases/` with their derived groups (nothing is solved).
 
-use crate::paper::artefact::{Artefact, TargetReport};
 use crate::paper::figures::{FIG4, FIG5, FIG6, FIG7};
+use crate::paper::target::{Target, TargetReport};
 use crate::physics::case::{CaseForm, LubricantSpec, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::context::Context;
@@ -27,7 +27,7 @@ fn emitted(
 /// Table 1: the lubricants of `cases/lubricants.toml`.
 pub struct Table1;
 
-impl Artefact for Table1 {
+impl Target for Table1 {
     fn name(&self) -> &'static str {
         "table1"
     }
@@ -45,7 +45,7 @@ impl Artefact for Table1 {
 /// Table 2: the operating parameters of Figs. 4-6 (`cases/fig4.toml` ...).
 pub struct Table2;
 
-impl Artefact for Table2 {
+impl Target for Table2 {
     fn name(&self) -> &'static str {
         "table2"
     }
@@ -63,7 +63,7 @@ impl Artefact for Table2 {
 /// Table 3: the contact configurations of Fig. 7 (`cases/fig7.toml`).
 pub struct Table3;
 
-impl Artefact for Table3 {
+impl Target for Table3 {
     fn name(&self) -> &'static str {
         "table3"
     }

@@ -8,12 +8,12 @@
 //! 46 and 21 W/(m K), the mid-plane bound, temperature rises), `thermal.svg` (isothermal and
 //! thermal `mu-bar` against `tau_c`, Eq. 13 dashed).
 
-use crate::paper::artefact::{Artefact, TargetReport};
 use crate::paper::figures::rows::Operating;
 use crate::paper::figures::{SweepFigure, FIG4, FIG5, FIG6};
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::paper::table4::Table4Case;
+use crate::paper::target::{Target, TargetReport};
 use crate::physics::case::CaseForm;
 use crate::physics::thermal::ISOTHERMAL_CORRECTION_MAX;
 use crate::pipeline::context::Context;
@@ -33,7 +33,7 @@ const FIGURES: [(&SweepFigure, &str); 3] = [
 /// The `thermal` target.
 pub struct ShearHeating;
 
-impl Artefact for ShearHeating {
+impl Target for ShearHeating {
     fn name(&self) -> &'static str {
         "thermal"
     }

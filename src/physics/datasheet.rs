@@ -217,12 +217,12 @@ impl IsoVg {
 /// Table 54D were not confirmed, so the D341 line's window
 /// ([`WALTHER_TEMPERATURE_RANGE_C`]) is used.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Density {
+pub struct DatasheetDensity {
     rho15_kg_m3: f64,
     expansion15_per_k: f64,
 }
 
-impl Density {
+impl DatasheetDensity {
     /// Density at 15 C `rho15_kg_m3` with the Table 54D expansion coefficient.
     pub fn d1250_table_54d(rho15_kg_m3: f64) -> Result<Self, DatasheetError> {
         check_positive("rho15_kg_m3", rho15_kg_m3)?;
@@ -236,7 +236,7 @@ impl Density {
         }
         let expansion15_per_k =
             D1250_TABLE_54D_K0 / (rho15_kg_m3 * rho15_kg_m3) + D1250_TABLE_54D_K1 / rho15_kg_m3;
-        Ok(Density {
+        Ok(DatasheetDensity {
             rho15_kg_m3,
             expansion15_per_k,
         })
@@ -249,7 +249,7 @@ impl Density {
     ) -> Result<Self, DatasheetError> {
         check_positive("rho15_kg_m3", rho15_kg_m3)?;
         check_positive("expansion15_per_k", expansion15_per_k)?;
-        Ok(Density {
+        Ok(DatasheetDensity {
             rho15_kg_m3,
             expansion15_per_k,
         })
@@ -365,8 +365,8 @@ impl Datasheet {
         };
         let walther = WaltherLine::through(40.0, nu40_mm2_s, 100.0, nu100_mm2_s)?;
         let density = match self.expansion15_per_k {
-            Some(a15) => Density::with_expansion(self.rho15_kg_m3, a15)?,
-            None => Density::d1250_table_54d(self.rho15_kg_m3)?,
+            Some(a15) => DatasheetDensity::with_expansion(self.rho15_kg_m3, a15)?,
+            None => DatasheetDensity::d1250_table_54d(self.rho15_kg_m3)?,
         };
         Ok(DatasheetLubricant {
             nu40_mm2_s,
@@ -387,7 +387,7 @@ pub struct DatasheetLubricant {
     nu100_mm2_s: f64,
     viscosity_index: Option<f64>,
     walther: WaltherLine,
-    density: Density,
+    density: DatasheetDensity,
     base_oil: BaseOil,
 }
 
@@ -413,7 +413,7 @@ impl DatasheetLubricant {
     }
 
     /// The density law.
-    pub fn density(&self) -> &Density {
+    pub fn density(&self) -> &DatasheetDensity {
         &self.density
     }
 

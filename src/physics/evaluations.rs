@@ -37,9 +37,9 @@ pub const EFFECTS: usize = 5;
 
 /// Evaluations counted per effect, indexed by `Effect as usize`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct Counts(pub [u64; EFFECTS]);
+pub struct EvaluationCounts(pub [u64; EFFECTS]);
 
-impl Counts {
+impl EvaluationCounts {
     /// Evaluations of `effect`.
     pub fn of(&self, effect: Effect) -> u64 {
         self.0[effect as usize]
@@ -66,8 +66,8 @@ pub(crate) fn record(effect: Effect) {
 
 /// The counts of this thread since the last call, and resets them.
 #[cfg(test)]
-pub(crate) fn take() -> Counts {
-    Counts(COUNTS.with(|c| c.replace([0; EFFECTS])))
+pub(crate) fn take() -> EvaluationCounts {
+    EvaluationCounts(COUNTS.with(|c| c.replace([0; EFFECTS])))
 }
 
 #[cfg(test)]
@@ -101,12 +101,12 @@ mod tests {
 
     /// Solves at level 4 (a 32 x 32 grid is enough to run every code path) and returns what
     /// was evaluated, from building the problem to the friction.
-    fn evaluated(physics: Physics, rolling: bool) -> Counts {
+    fn evaluated(physics: Physics, rolling: bool) -> EvaluationCounts {
         evaluated_with_cycles(physics, rolling).0
     }
 
     /// The counts and the finest-level cycles of the solve.
-    fn evaluated_with_cycles(physics: Physics, rolling: bool) -> (Counts, usize) {
+    fn evaluated_with_cycles(physics: Physics, rolling: bool) -> (EvaluationCounts, usize) {
         take();
         let problem = case(physics);
         let params = {
@@ -128,7 +128,11 @@ mod tests {
             rheology: Rheology::Newtonian,
         };
         let counts = evaluated(plain, false);
-        assert_eq!(counts, Counts::default(), "Barus-incompressible-Newtonian");
+        assert_eq!(
+            counts,
+            EvaluationCounts::default(),
+            "Barus-incompressible-Newtonian"
+        );
 
         // Each effect alone: only its own counter moves. This is also the control that the
         // counters are wired in (a counter that never counts would pass the line above).

@@ -8,7 +8,7 @@
 //! Nomenclature (`2/E' = (1 - nu1^2)/E1 + (1 - nu2^2)/E2`), `u_s = u1 + u2 = 2 u_m` the sum
 //! velocity as everywhere in the paper. Dimensionless variables: `X = x/a`, `P = p/p_H`,
 //! `H = h Rx / a^2` (the 1-D analogue of the paper's `H = h/c`), so that the film equation is
-//! `H = H0 + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
+//! `H = Delta + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
 
 use super::case::{
     eyring_n_s, field, hertzian_pressure, physical_scales, positive, shear_law, slip_in_range,

@@ -1,10 +1,10 @@
-//! Why a target could not be built: the one error of the pipeline and the paper's artefacts.
+//! Why a target could not be built: the one error of the pipeline and the paper's targets.
 //!
-//! One enum serves both layers: an artefact fails for the pipeline's reasons (a case, a
+//! One enum serves both layers: a target fails for the pipeline's reasons (a case, a
 //! solve, a sweep file, a file, the cache, the offline mode) plus two of its own (a picture,
 //! an unknown target), and a second enum that only wrapped this one would add a layer every
 //! message passes through without saying more. It lives in `pipeline` because `paper` sits
-//! above it (the architecture is one-way); an artefact's own typed input errors (the measured
+//! above it (the architecture is one-way); a target's own typed input errors (the measured
 //! data of Fig. 8) come in whole ([`PipelineError::Data`]). The CLI alone turns it
 //! into a line and an exit code. Every message names the file and field where known, and
 //! carries its cause's text: the wrapped errors are fields, not sources, so that a chain
@@ -92,7 +92,7 @@ pub enum PipelineError {
     /// An input a target cannot use: a shipped case file without the case it needs.
     #[error("{0}")]
     Input(String),
-    /// An artefact's own typed input error (the measured data of Fig. 8), as its source.
+    /// A target's own typed input error (the measured data of Fig. 8), as its source.
     #[error(transparent)]
     Data(Box<dyn std::error::Error + Send + Sync>),
 }

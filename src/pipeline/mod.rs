@@ -1,4 +1,4 @@
-//! The engine under the paper's artefacts: solves as jobs with cache keys, run in parallel
+//! The engine under the paper's targets: solves as jobs with cache keys, run in parallel
 //! through the result cache, and the files they become.
 //!
 //! - [`job`]: each solve as a job, [`keys`]: its cache key, [`label`]: its case in words,

@@ -1,6 +1,6 @@
 //! A small kit of deterministic SVG figures (scatter series, model curves, log or linear axes,
 //! a legend), drawn with plotters' SVG backend. It knows nothing of the paper: the pictures of
-//! the artefacts are built on it in `paper/`.
+//! the targets are built on it in `paper/`.
 //!
 //! # Text without fonts
 //!

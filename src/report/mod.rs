@@ -6,7 +6,7 @@
 pub mod html;
 pub mod solve;
 
-use crate::paper::artefact::{Artefact, ErrorSummary, Measure, Spread, TargetReport};
+use crate::paper::target::{ErrorSummary, Measure, Spread, Target, TargetReport};
 use crate::paper::{build, find};
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::{rows, Decimals};
@@ -18,11 +18,11 @@ use serde::Serialize;
 /// Builds every target in order and writes `summary.csv` and the report `index.html`; stops at the first target that
 /// cannot be built (a solve that fails is a result, not a stop).
 pub fn build_all(
-    artefacts: &[&dyn Artefact],
+    targets: &[&dyn Target],
     ctx: &Context,
 ) -> Result<Vec<TargetReport>, PipelineError> {
     let mut built = Vec::new();
-    for a in artefacts {
+    for a in targets {
         built.push(build(*a, ctx)?);
     }
     ctx.write("summary.csv", &summary_csv(&built))?;

@@ -22,7 +22,7 @@ pub struct KrylovParams {
 
 /// What [`solve`] reached.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Outcome {
+pub(crate) struct Convergence {
     /// Matrix-vector products with `A`.
     pub iterations: usize,
     /// The relative residual `|b - A x| / |b|` at the end (from the Arnoldi recurrence,
@@ -47,13 +47,13 @@ pub(crate) fn solve(
     tolerance: f64,
     mut apply: impl FnMut(&[f64], &mut [f64]),
     mut precondition: impl FnMut(&[f64], &mut [f64]),
-) -> Outcome {
+) -> Convergence {
     let n = b.len();
     let m = params.restart.max(1);
     x.iter_mut().for_each(|v| *v = 0.0);
     let b_norm = norm(b);
     if b_norm == 0.0 || !b_norm.is_finite() {
-        return Outcome {
+        return Convergence {
             iterations: 0,
             relative_residual: if b_norm == 0.0 { 0.0 } else { f64::NAN },
         };
@@ -156,7 +156,7 @@ pub(crate) fn solve(
             break;
         }
     }
-    Outcome {
+    Convergence {
         iterations,
         relative_residual: relative,
     }

@@ -37,7 +37,7 @@ pub const LIGHT_LOAD_M: f64 = 300.0;
 /// Moes load from which [`Domain::for_load`] takes the heavy-load domain.
 pub const HEAVY_LOAD_M: f64 = 4000.0;
 
-/// The largest `H0 / (m r^2)` the far-field edge may see ([`Domain::for_far_field`]): the
+/// The largest `Delta / (m r^2)` the far-field edge may see ([`Domain::for_far_field`]): the
 /// asymptote's second-order error there is about its square. With the fitted far field and
 /// [`FAR_FIELD_LOAD_SHARE`], a battery of eleven cases (M 1-1000, L 1-60) moves film and
 /// friction by at most 0.5 % when the inlet and sides are doubled at levels 7/8; at 0.15 two
@@ -59,10 +59,10 @@ impl Domain {
 
     /// The domain a problem needs with the far-field edge (the rule of
     /// [`Domain::for_problem`], see `docs/DOMAIN_NOTES.md`): the base domain of its load
-    /// ([`Domain::for_load`]), its inlet and sides pushed out where the estimated film constant `H0` would make the
-    /// rigid gap `m r^2` at the edge less than `H0 / FAR_FIELD_GAP_RATIO`, so that the
+    /// ([`Domain::for_load`]), its inlet and sides pushed out where the estimated film constant `Delta` would make the
+    /// rigid gap `m r^2` at the edge less than `Delta / FAR_FIELD_GAP_RATIO`, so that the
     /// far-field asymptote holds there (`point::far_field`), in steps of 0.5.
-    /// `H0` is estimated before the solve as the Nijenbanning-Venner-Moes central film
+    /// `Delta` is estimated before the solve as the Nijenbanning-Venner-Moes central film
     /// (in `h/c`) less the Hertzian approach (1): it is the formula that covers the
     /// rigid regime, and it overestimates the Roelands films (a larger domain, never a
     /// smaller one).
@@ -71,17 +71,17 @@ impl Domain {
     }
 
     /// [`Domain::for_far_field`] with its two knobs given (the domain study's): the edge's
-    /// largest `H0 / (m r^2)`, and the largest estimated share of the load outside, about
+    /// largest `Delta / (m r^2)`, and the largest estimated share of the load outside, about
     /// `2 g(0) / R` with `g(0) = 0.8 lambda` (the circle's) against `2 pi / 3` (infinite
     /// turns it off).
     pub fn for_far_field_with(problem: &Problem, gap_ratio: f64, load_share: f64) -> Self {
         let g = &problem.groups;
         let base = Domain::for_load(g.m);
-        let h0 = hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0;
+        let delta = hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale - 1.0;
         let by_share = 1.6 * g.lambda / (load_share * 2.0 * std::f64::consts::PI / 3.0);
         let reach = |gap_factor: f64| {
-            let by_gap = if h0 > 0.0 {
-                (h0 / (gap_ratio * gap_factor)).sqrt()
+            let by_gap = if delta > 0.0 {
+                (delta / (gap_ratio * gap_factor)).sqrt()
             } else {
                 0.0
             };

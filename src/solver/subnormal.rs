@@ -99,7 +99,7 @@ impl Drop for FlushToZero {
 
 /// What an [`audit`] counted on its thread.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-pub struct Counts {
+pub struct SubnormalCounts {
     /// Factorisations examined.
     pub factors: usize,
     /// Their `L` and `U` entries (the supernodal blocks' explicit zeros included).
@@ -118,14 +118,14 @@ pub struct Counts {
 }
 
 thread_local! {
-    static AUDIT: Cell<Option<Counts>> = const { Cell::new(None) };
+    static AUDIT: Cell<Option<SubnormalCounts>> = const { Cell::new(None) };
 }
 
-/// Counts, on the calling thread, the subnormal entries of every preconditioner factor and
+/// SubnormalCounts, on the calling thread, the subnormal entries of every preconditioner factor and
 /// GMRES vector that `run` produces (a test's instrument: a factor is read through its debug
 /// form, seconds for a level-8 one, since faer keeps its values private).
-pub fn audit<T>(run: impl FnOnce() -> T) -> (T, Counts) {
-    let before = AUDIT.with(|a| a.replace(Some(Counts::default())));
+pub fn audit<T>(run: impl FnOnce() -> T) -> (T, SubnormalCounts) {
+    let before = AUDIT.with(|a| a.replace(Some(SubnormalCounts::default())));
     let out = run();
     let counts = AUDIT.with(|a| a.replace(before)).unwrap_or_default();
     (out, counts)
@@ -135,7 +135,7 @@ fn auditing() -> bool {
     AUDIT.with(|a| a.get().is_some())
 }
 
-fn add(update: impl FnOnce(&mut Counts)) {
+fn add(update: impl FnOnce(&mut SubnormalCounts)) {
     AUDIT.with(|a| {
         if let Some(mut c) = a.get() {
             update(&mut c);

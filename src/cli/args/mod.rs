@@ -10,7 +10,7 @@ pub use contact::{
     BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, PredictArgs, RheologyArg, SolveArgs,
     ThermalArgs, ViscosityArg,
 };
-use repro::paper::{find, Artefact, REGISTRY};
+use repro::paper::{find, Target, REGISTRY};
 use std::path::PathBuf;
 
 /// Regenerates "A Generalized Traction Curve for EHL Contacts" (Jacod, Venner and Lugt,
@@ -259,7 +259,7 @@ fn parse_levels(s: &str) -> std::result::Result<Levels, String> {
 /// What the command line asks for: a target of the registry, or one of the other commands.
 pub enum Invocation {
     /// `repro <target>`.
-    Target(&'static dyn Artefact, TargetArgs),
+    Target(&'static dyn Target, TargetArgs),
     /// Any other command.
     Command(Command),
 }

@@ -28,7 +28,7 @@ pub mod cases;
 pub mod files;
 pub mod picture;
 
-use crate::paper::artefact::median;
+use crate::paper::target::median;
 use crate::solver::output::SolveError;
 use crate::solver::richardson::estimate;
 pub use cases::{AccuracyCase, AccuracyProblem, LevelOutputs};

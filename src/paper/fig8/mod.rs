@@ -6,9 +6,9 @@
 pub mod picture;
 pub mod reader;
 
-use crate::paper::artefact::{Artefact, Measure, TargetReport};
 use crate::paper::fig8::reader::{read_folder, transform, ReducedRow};
 use crate::paper::mastercurve::fit::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
+use crate::paper::target::{Measure, Target, TargetReport};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;
 use crate::pipeline::context::Context;
@@ -97,7 +97,7 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
 /// Fig. 8: the measured datasets of [`DATA_DIR`], transformed.
 pub struct Fig8;
 
-impl Artefact for Fig8 {
+impl Target for Fig8 {
     fn name(&self) -> &'static str {
         "fig8"
     }

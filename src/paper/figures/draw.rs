@@ -2,11 +2,11 @@
 //! its points measured against Eq. (13) ([`sweep_figure`]), as the paper's figures and a
 //! user's study alike describe it ([`Drawing`]).
 
-use super::plot::{Friction, Plot, SeriesBy};
+use super::plot::{FrictionAxis, Plot, SeriesBy};
 use super::run::{run_sweep, selection};
 use super::{picture, rows};
-use crate::paper::artefact::{Measure, TargetReport};
 use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
+use crate::paper::target::{Measure, TargetReport};
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::{run_cases_in, PointRun, RunProgress};
@@ -169,7 +169,7 @@ pub fn sweep_figure(
 /// Fig. 1's collapse: the scatter of the plotted `mu-bar` (`y`; total for Fig. 1) ordered by
 /// the paper's `S-bar^(1/4) M L^3` against the exponents of `S-bar^a M L^c` that collapse our
 /// points best.
-pub fn severity_summary(runs: &[PointRun], y: Friction) -> String {
+pub fn severity_summary(runs: &[PointRun], y: FrictionAxis) -> String {
     let cases: Vec<(f64, f64, f64, f64)> = runs
         .iter()
         .filter_map(|r| {

@@ -13,14 +13,14 @@ pub mod run;
 pub mod sidecar;
 pub mod spec;
 
-use crate::paper::artefact::{Artefact, SweepFile, TargetReport, LINE_LEVEL};
+use crate::paper::target::{ShippedSweep, Target, TargetReport, LINE_LEVEL};
 use crate::pipeline::executor::{PointRun, RunProgress};
 use crate::pipeline::job::{point_jobs_in, Job, Setup};
 use crate::pipeline::sweep::Sweep;
 use crate::pipeline::{context::Context, error::PipelineError};
 use crate::plot::{Marker, Series};
 use draw::{severity_summary, sweep_figure, Drawing};
-pub use plot::{Abscissa, Friction, Plot, SeriesBy};
+pub use plot::{Abscissa, FrictionAxis, Plot, SeriesBy};
 use run::selection;
 pub use run::{run_sweep, study_jobs};
 pub(crate) use sidecar::write_provenance;
@@ -52,7 +52,7 @@ impl SweepFigure {
     }
 }
 
-impl Artefact for SweepFigure {
+impl Target for SweepFigure {
     fn name(&self) -> &'static str {
         self.name
     }
@@ -65,7 +65,7 @@ impl Artefact for SweepFigure {
         Some(self.level)
     }
 
-    fn sweep_file(&self) -> Option<SweepFile> {
+    fn sweep_file(&self) -> Option<ShippedSweep> {
         Some(self.sweep)
     }
 

@@ -1,7 +1,7 @@
-//! What a sweep figure plots: its x ([`Abscissa`]) against its y ([`Friction`]), and how
+//! What a sweep figure plots: its x ([`Abscissa`]) against its y ([`FrictionAxis`]), and how
 //! its cases split into series ([`SeriesBy`]).
 
-use crate::paper::artefact::{ErrorSummary, Spread};
+use crate::paper::target::{ErrorSummary, Spread};
 use crate::physics::case::{Case, CaseForm, Problem};
 use crate::pipeline::executor::PointRun;
 use crate::pipeline::outcome::{Output, SolvedCase};
@@ -19,27 +19,27 @@ pub enum Abscissa {
 
 /// The reduced friction on the y axis of a sweep figure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Friction {
+pub enum FrictionAxis {
     /// Sliding `mu-bar` (Figs. 3-7, a study).
     Sliding,
     /// Sliding plus rolling `mu-bar` (Figs. 1-2).
     Total,
 }
 
-impl Friction {
+impl FrictionAxis {
     /// The output it reads from a solved case.
     pub fn output(self) -> Output {
         match self {
-            Friction::Sliding => Output::MuBarSliding,
-            Friction::Total => Output::MuBarTotal,
+            FrictionAxis::Sliding => Output::MuBarSliding,
+            FrictionAxis::Total => Output::MuBarTotal,
         }
     }
 
     /// Its value for a solved case.
     pub fn of(self, solved: &SolvedCase) -> f64 {
         match self {
-            Friction::Sliding => solved.mu_bar_sliding,
-            Friction::Total => solved.mu_bar_total(),
+            FrictionAxis::Sliding => solved.mu_bar_sliding,
+            FrictionAxis::Total => solved.mu_bar_total(),
         }
     }
 }
@@ -50,14 +50,14 @@ pub struct Plot {
     /// The x axis.
     pub x: Abscissa,
     /// The y axis.
-    pub y: Friction,
+    pub y: FrictionAxis,
 }
 
 impl Plot {
     /// Sliding `mu-bar` against `tau_c`: Figs. 3-7 and a user's study.
     pub const SLIDING: Plot = Plot {
         x: Abscissa::TauC,
-        y: Friction::Sliding,
+        y: FrictionAxis::Sliding,
     };
 
     /// Whether its points are measured against Eq. (13) and the curve drawn over them: only
@@ -115,8 +115,8 @@ impl Plot {
             Abscissa::TauC => "tau_c_x",
         };
         let y = match self.y {
-            Friction::Total => "mu_bar_total_y",
-            Friction::Sliding => "mu_bar_sliding_y",
+            FrictionAxis::Total => "mu_bar_total_y",
+            FrictionAxis::Sliding => "mu_bar_sliding_y",
         };
         (x, y)
     }
@@ -128,8 +128,8 @@ impl Plot {
             Abscissa::Severity => "S̄^{1/4} M L^{3}",
         };
         let y = match self.y {
-            Friction::Sliding => "sliding reduced friction μ̄",
-            Friction::Total => "total reduced friction μ̄",
+            FrictionAxis::Sliding => "sliding reduced friction μ̄",
+            FrictionAxis::Total => "total reduced friction μ̄",
         };
         (x, y)
     }

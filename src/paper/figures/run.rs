@@ -2,7 +2,7 @@
 //! through the cache ([`run_sweep`]): what every sweep figure, a study and the targets built
 //! on the figures' sweeps share.
 
-use crate::paper::artefact::WORKING_LEVEL;
+use crate::paper::target::WORKING_LEVEL;
 use crate::physics::case::Case;
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;

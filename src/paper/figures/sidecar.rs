@@ -2,7 +2,7 @@
 //! stamp of every row of its CSVs, and the solver parameters they were solved with.
 
 use super::line::LineRun;
-use crate::paper::artefact::TargetReport;
+use crate::paper::target::TargetReport;
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;

@@ -3,8 +3,8 @@
 //! figure is its `cases/<sweep>.toml`, its entry here and its line in the registry
 //! (`paper/mod.rs`); nothing else reads its name.
 
-use super::plot::{Abscissa, Friction, Plot, SeriesBy};
-use crate::paper::artefact::{sweep_file, SweepFile};
+use super::plot::{Abscissa, FrictionAxis, Plot, SeriesBy};
+use crate::paper::target::{sweep_file, ShippedSweep};
 
 /// The claim of the figures of sliding friction (Figs. 3-7 and a user's study).
 pub const SLIDING_CLAIM: &str = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)";
@@ -19,12 +19,12 @@ pub struct SweepFigure {
     /// One line for `repro list`.
     pub description: &'static str,
     /// The shipped sweep it draws (`cases/<name>.toml`).
-    pub sweep: SweepFile,
+    pub sweep: ShippedSweep,
     /// What it plots.
     pub plot: Plot,
     /// How its cases split into series.
     pub series: SeriesBy,
-    /// Level without `--level` ([`crate::paper::Artefact::default_level`]).
+    /// Level without `--level` ([`crate::paper::Target::default_level`]).
     pub level: u32,
     /// The paper's claim, for the report.
     pub claim: &'static str,
@@ -44,7 +44,7 @@ pub const FIG1: SweepFigure = SweepFigure {
     sweep: sweep_file!("fig1-3"),
     plot: Plot {
         x: Abscissa::Severity,
-        y: Friction::Total,
+        y: FrictionAxis::Total,
     },
     series: SeriesBy::MoesL,
     level: 6,
@@ -60,7 +60,7 @@ pub const FIG2: SweepFigure = SweepFigure {
     description: "Total mu-bar vs tau_c, same sweep, Eq. (13) dashed",
     plot: Plot {
         x: Abscissa::TauC,
-        y: Friction::Total,
+        y: FrictionAxis::Total,
     },
     claim: "total mu-bar follows Eq. (13), c = 5, except a cluster at low tau_c where rolling friction dominates",
     ..FIG1

@@ -11,11 +11,11 @@
 
 pub mod form;
 
-use crate::paper::artefact::{Artefact, TargetReport};
 use crate::paper::figures::{run_sweep, study_jobs, write_provenance, FIG4};
 use crate::paper::lss::form::{fit, saturated, FormFit, FormPoint};
 use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
+use crate::paper::target::{Target, TargetReport};
 use crate::physics::case::{Case, CaseForm};
 use crate::physics::rheology::{LimitingShearStress, Rheology};
 use crate::pipeline::context::Context;
@@ -324,7 +324,7 @@ fn svg(rows: &[LimitedCase], form: Option<FormFit>) -> Result<Option<String>, Pi
 /// The `lss` target.
 pub struct Lss;
 
-impl Artefact for Lss {
+impl Target for Lss {
     fn name(&self) -> &'static str {
         "lss"
     }

@@ -12,7 +12,6 @@ pub mod oracle;
 pub mod picture;
 pub mod refined;
 
-use crate::paper::artefact::{Artefact, Measure, TargetReport, LINE_LEVEL};
 use crate::paper::figures::line::solve_table3;
 use crate::paper::figures::{SweepFigure, FIG3, FIG4, FIG5, FIG6, FIG7};
 use crate::paper::mastercurve::fit::{eq13_mu_bar, fit, FIT_TAU_C_MIN, PAPER_C};
@@ -20,6 +19,7 @@ use crate::paper::mastercurve::oracle::{line_flat, point_flat};
 use crate::paper::mastercurve::refined::{
     band95, cross_validated, fit as fit_refined, rms_rel, Features, FigureCheck, Refined, Sample,
 };
+use crate::paper::target::{Measure, Target, TargetReport, LINE_LEVEL};
 use crate::physics::flat_film::alpha_e;
 use crate::pipeline::context::Context;
 use crate::pipeline::csv::rows;
@@ -212,7 +212,7 @@ fn fit_csv(
 /// The `mastercurve` target.
 pub struct Mastercurve;
 
-impl Artefact for Mastercurve {
+impl Target for Mastercurve {
     fn name(&self) -> &'static str {
         "mastercurve"
     }

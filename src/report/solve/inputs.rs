@@ -2,7 +2,7 @@
 //! keywords), turned once into what the library takes: a [`Case`], solver parameters, a line
 //! problem, the thermal post-process's inputs. Every error names the flag.
 
-use crate::paper::artefact::WORKING_LEVEL;
+use crate::paper::target::WORKING_LEVEL;
 use crate::physics::case::{
     Case, CaseError, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
 };

@@ -5,7 +5,7 @@
 //! logarithm in closed form: with `F(t) = int_0^t ln|s| ds = t ln|t| - t` (odd),
 //! `K(m) = -(1/pi) [F((m + 1/2) h) - F((m - 1/2) h)]`.
 //!
-//! The sum is a Toeplitz matrix-vector product: [`Deformation`] evaluates it exactly by FFT on
+//! The sum is a Toeplitz matrix-vector product: [`LineDeformation`] evaluates it exactly by FFT on
 //! a zero-padded periodic grid of `2n` points for large grids and by direct summation on small
 //! ones; [`direct_sum`] is the obviously correct reference the tests hold it to.
 
@@ -28,11 +28,11 @@ fn log_integral(t: f64) -> f64 {
 
 /// Influence coefficients `K(m)`, `0 <= m <= n + 2`, of a grid with mesh size `h`.
 #[derive(Debug, Clone)]
-pub(crate) struct Kernel {
+pub(crate) struct LineKernel {
     values: Vec<f64>,
 }
 
-impl Kernel {
+impl LineKernel {
     /// The cell integrals of `-(1/pi) ln|X|` for mesh size `h` and `n` intervals.
     pub fn new(h: f64, n: usize) -> Self {
         let values = (0..=n + 2)
@@ -41,7 +41,7 @@ impl Kernel {
                 -(log_integral((m + 0.5) * h) - log_integral((m - 0.5) * h)) / PI
             })
             .collect();
-        Kernel { values }
+        LineKernel { values }
     }
 
     /// `K(|m|)`: the deformation at a node per unit pressure at a node `m` away.
@@ -52,7 +52,7 @@ impl Kernel {
 }
 
 /// `W = K * P` at every node `0..=n` by direct summation: the reference for tests.
-pub(crate) fn direct_sum(kernel: &Kernel, p: &[f64], w: &mut [f64]) {
+pub(crate) fn direct_sum(kernel: &LineKernel, p: &[f64], w: &mut [f64]) {
     let n = p.len() - 1;
     for i in 0..=n {
         let mut s = 0.0;
@@ -75,25 +75,25 @@ struct Spectral {
 /// The pressure vanishes at the end nodes, so the sources are the interior nodes `1..n` and
 /// the targets all nodes `0..=n`: every offset lies in `-(n-1)..=n`, and a periodic grid of
 /// `2n` points holds the linear convolution without wrap-around.
-pub(crate) struct Deformation {
+pub(crate) struct LineDeformation {
     n: usize,
-    kernel: Kernel,
+    kernel: LineKernel,
     spectral: Option<Spectral>,
 }
 
-impl std::fmt::Debug for Deformation {
+impl std::fmt::Debug for LineDeformation {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Deformation")
+        f.debug_struct("LineDeformation")
             .field("n", &self.n)
             .field("fft", &self.spectral.is_some())
             .finish()
     }
 }
 
-impl Deformation {
+impl LineDeformation {
     /// Builds the evaluator of a grid of `n` intervals of size `h`.
     pub fn new(h: f64, n: usize) -> Self {
-        let kernel = Kernel::new(h, n);
+        let kernel = LineKernel::new(h, n);
         let spectral = (n >= FFT_FROM).then(|| {
             let size = 2 * n;
             let mut planner = FftPlanner::new();
@@ -118,7 +118,7 @@ impl Deformation {
                 inv,
             }
         });
-        Deformation {
+        LineDeformation {
             n,
             kernel,
             spectral,
@@ -126,7 +126,7 @@ impl Deformation {
     }
 
     /// The influence coefficients (for the relaxation's Jacobian).
-    pub fn kernel(&self) -> &Kernel {
+    pub fn kernel(&self) -> &LineKernel {
         &self.kernel
     }
 
@@ -161,7 +161,7 @@ mod tests {
     fn centre_cell_is_the_closed_form_and_far_cells_the_point_value() {
         // -(1/pi) int_{-h/2}^{h/2} ln|t| dt = -(h/pi)(ln(h/2) - 1) (exact).
         let h = 0.01;
-        let k = Kernel::new(h, 8);
+        let k = LineKernel::new(h, 8);
         let expect = -(h / PI) * ((h / 2.0).ln() - 1.0);
         assert!((k.at(0) - expect).abs() < 1e-17);
         // Far cells tend to the midpoint value -(h/pi) ln(m h) (error ~ 1/(24 m^2)).
@@ -175,7 +175,7 @@ mod tests {
         // only (1e-13 of the largest deformation).
         let n = 512;
         let h = 6.0 / n as f64;
-        let def = Deformation::new(h, n);
+        let def = LineDeformation::new(h, n);
         assert!(def.spectral.is_some());
         let mut p: Vec<f64> = (0..=n)
             .map(|i| {
@@ -202,7 +202,7 @@ mod tests {
         let n = 1usize << (level + 1);
         let (x0, x1) = (-4.5, 1.5);
         let h = (x1 - x0) / n as f64;
-        let def = Deformation::new(h, n);
+        let def = LineDeformation::new(h, n);
         let p: Vec<f64> = (0..=n)
             .map(|i| LineHertz::pressure(x0 + i as f64 * h))
             .collect();

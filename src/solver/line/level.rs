@@ -8,7 +8,7 @@
 //! (half-point coefficients the mean of the nodal ones; second-order upstream wedge, first
 //! order at `i = 1`), as the point contact does along `X`.
 
-use super::kernel::Deformation;
+use super::kernel::LineDeformation;
 use crate::physics::density::Density;
 use crate::physics::line_contact::{LineEyringFlow, LineProblem};
 use crate::physics::rheology::ShearLaw;
@@ -16,7 +16,7 @@ use crate::physics::viscosity::Viscosity;
 
 /// The parts of the dimensionless problem the discrete equations use.
 #[derive(Debug, Clone, Copy)]
-pub(crate) struct Model {
+pub(crate) struct LineModel {
     pub viscosity: Viscosity,
     pub density: Density,
     pub rheology: ShearLaw,
@@ -29,10 +29,10 @@ pub(crate) struct Model {
     pub g_scale: f64,
 }
 
-impl Model {
+impl LineModel {
     pub fn new(problem: &LineProblem) -> Self {
         let g = &problem.groups;
-        Model {
+        LineModel {
             viscosity: problem.viscosity,
             density: problem.density,
             rheology: problem.shear,
@@ -57,17 +57,17 @@ impl Model {
 
 /// Fields of one level.
 #[derive(Debug)]
-pub(crate) struct Level {
+pub(crate) struct LineLevelFields {
     /// Intervals (nodes `0..=n`).
     pub n: usize,
     /// `X` of node 0.
     pub x0: f64,
     /// Mesh size.
     pub dx: f64,
-    pub deformation: Deformation,
+    pub deformation: LineDeformation,
     /// Pressure `P`.
     pub p: Vec<f64>,
-    /// Film `H = H0 + X^2/2 + W`.
+    /// Film `H = Delta + X^2/2 + W`.
     pub h: Vec<f64>,
     /// The undeformed gap `X^2/2`.
     pub hrhs: Vec<f64>,
@@ -84,7 +84,7 @@ pub(crate) struct Level {
 /// The force-balance target `int P dX = pi/2`.
 pub(crate) const LOAD: f64 = std::f64::consts::FRAC_PI_2;
 
-impl Level {
+impl LineLevelFields {
     pub fn new(n: usize, x0: f64, x1: f64) -> Self {
         let dx = (x1 - x0) / n as f64;
         let hrhs = (0..=n)
@@ -93,11 +93,11 @@ impl Level {
                 0.5 * x * x
             })
             .collect();
-        Level {
+        LineLevelFields {
             n,
             x0,
             dx,
-            deformation: Deformation::new(dx, n),
+            deformation: LineDeformation::new(dx, n),
             p: vec![0.0; n + 1],
             h: vec![0.0; n + 1],
             hrhs,
@@ -119,11 +119,11 @@ impl Level {
         ((x - self.x0) / self.dx).round().clamp(0.0, self.n as f64) as usize
     }
 
-    /// Film equation: `H = H0 + hrhs + W(P)`.
-    pub fn update_film(&mut self, h0: f64) {
+    /// Film equation: `H = Delta + hrhs + W(P)`.
+    pub fn update_film(&mut self, delta: f64) {
         self.deformation.apply(&self.p, &mut self.w);
         for ((h, r), w) in self.h.iter_mut().zip(&self.hrhs).zip(&self.w) {
-            *h = h0 + r + w;
+            *h = delta + r + w;
         }
     }
 
@@ -141,12 +141,12 @@ impl Level {
 
     /// `G = (h/2)(dp/dx)/tau0` at node `i`.
     #[inline]
-    pub fn g(&self, m: &Model, i: usize) -> f64 {
+    pub fn g(&self, m: &LineModel, i: usize) -> f64 {
         m.g_scale * self.h[i] * self.slope(&self.p, i)
     }
 
     /// Coefficients of the Reynolds equation from the current `P` and `H`.
-    pub fn update_coefficients(&mut self, m: &Model) {
+    pub fn update_coefficients(&mut self, m: &LineModel) {
         let compressible = !m.density.is_incompressible();
         let gradient = m.uses_gradient();
         for k in 0..=self.n {

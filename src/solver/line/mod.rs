@@ -12,9 +12,9 @@
 //!   Eqs. (2)-(4) that the point contact uses
 //!   ([`crate::physics::line_contact::LineEyringFlow::Perturbation`]), selected on the
 //!   problem;
-//! - film `H = H0 + X^2/2 - (1/pi) int P ln|X - X'| dX'`, the pressure piecewise constant on
+//! - film `H = Delta + X^2/2 - (1/pi) int P ln|X - X'| dX'`, the pressure piecewise constant on
 //!   the cells, evaluated exactly on each grid (direct sum or zero-padded FFT, [`kernel`]);
-//! - force balance `int P dX = pi/2` solved together with Reynolds, `H0` an unknown.
+//! - force balance `int P dX = pi/2` solved together with Reynolds, `Delta` an unknown.
 //!
 //! Method: damped semi-smooth Newton with the full (dense) Jacobian on each grid of a nested
 //! iteration: the Hertzian pressure on the start level, then each finer level starts from the
@@ -41,7 +41,7 @@ use crate::solver::output::{
     Step,
 };
 use crate::solver::richardson::ERROR_LEVELS;
-use level::{Level, Model, LOAD};
+use level::{LineLevelFields, LineModel, LOAD};
 use std::time::Instant;
 
 /// Revision of the line-contact numerics: part of every line-contact cache key, bumped
@@ -55,7 +55,7 @@ pub const MIN_LEVEL: u32 = 3;
 /// Residual growth over the best iteration that stops the solve as diverged.
 const DIVERGENCE_FACTOR: f64 = 1e3;
 /// `1/4 + ln(2)/2`: the deformation plus `X^2/2` of the dry Hertzian pressure, flat inside
-/// the contact (so that `H(0) = H0 + 0.5966` for the Hertzian start).
+/// the contact (so that `H(0) = Delta + 0.5966` for the Hertzian start).
 const HERTZ_APPROACH: f64 = 0.25 + 0.5 * std::f64::consts::LN_2;
 
 /// The computational domain in `X = x/a`.
@@ -155,8 +155,8 @@ pub struct LineSolution {
     pub p: Vec<f64>,
     /// Film `H = h Rx / a^2` at the nodes.
     pub h: Vec<f64>,
-    /// The film constant `H0`.
-    pub h0: f64,
+    /// The film constant `Delta`.
+    pub delta: f64,
     /// Central and minimum film (`H` and Moes units).
     pub film: Film,
     /// Reduced friction `mu-bar = mu p_H / tau0`.
@@ -173,7 +173,7 @@ pub struct LineSolution {
 }
 
 /// The outputs of a converged line-contact level.
-fn values(level: &Level, model: &Model, lv: u32) -> LevelValues {
+fn values(level: &LineLevelFields, model: &LineModel, lv: u32) -> LevelValues {
     let film = friction::film(level, 1.0);
     let mu = friction::friction(level, model, true);
     LevelValues {
@@ -187,7 +187,7 @@ fn values(level: &Level, model: &Model, lv: u32) -> LevelValues {
 
 /// The starting film constant: the central film of Moes' formula minus the Hertzian
 /// deformation at the centre.
-fn initial_h0(problem: &LineProblem) -> f64 {
+fn initial_delta(problem: &LineProblem) -> f64 {
     let g = &problem.groups;
     LineFilmFormula::Moes.hc(g.m, g.l) / g.moes_film_scale - HERTZ_APPROACH
 }
@@ -220,10 +220,10 @@ pub fn solve(
             d.x_start, d.x_end
         )));
     }
-    let model = Model::new(problem);
+    let model = LineModel::new(problem);
     let first = params.start_level.min(params.level);
-    let mut h0 = initial_h0(problem);
-    let mut level = Level::new(1usize << (first + 1), d.x_start, d.x_end);
+    let mut delta = initial_delta(problem);
+    let mut level = LineLevelFields::new(1usize << (first + 1), d.x_start, d.x_end);
     for i in 0..=level.n {
         level.p[i] = LineHertz::pressure(level.x(i));
     }
@@ -232,7 +232,7 @@ pub fn solve(
     let mut ladder = Vec::new();
     for lv in first..=params.level {
         if lv > first {
-            let mut fine = Level::new(1usize << (lv + 1), d.x_start, d.x_end);
+            let mut fine = LineLevelFields::new(1usize << (lv + 1), d.x_start, d.x_end);
             transfer::interpolate_solution(&level, &mut fine);
             level = fine;
         }
@@ -241,7 +241,7 @@ pub fn solve(
         let mut non_finite = false;
         let mut diverged = false;
         let mut before = level.p.clone();
-        let mut report = |l: &Level, residual: f64, load_error: f64, _h0: f64| -> bool {
+        let mut report = |l: &LineLevelFields, residual: f64, load_error: f64, _h0: f64| -> bool {
             level_history.push(residual);
             if let Some(obs) = observer.as_mut() {
                 obs(&Progress {
@@ -270,14 +270,14 @@ pub fn solve(
         let outcome = newton::iterate(
             &mut level,
             &model,
-            &mut h0,
+            &mut delta,
             params.max_iterations,
             params.tolerance,
             params.load_tolerance,
             &mut report,
         );
         history = level_history;
-        if non_finite || !h0.is_finite() {
+        if non_finite || !delta.is_finite() {
             return Err(SolveError::NonFinite {
                 what: "pressure or residual",
                 cycle: outcome.iterations,
@@ -323,7 +323,7 @@ pub fn solve(
         x: (0..=fine.n).map(|i| fine.x(i)).collect(),
         p: fine.p.clone(),
         h: fine.h.clone(),
-        h0,
+        delta,
         film,
         friction,
         tau_m: friction::mean_shear_stress(fine, &model),

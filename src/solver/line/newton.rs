@@ -2,9 +2,9 @@
 //! approach of Houpert and Hamrock 1986 and Conry, Wang and Cusano 1987: the full Jacobian,
 //! elastic coupling included).
 //!
-//! Unknowns: `P_1 .. P_{n-1}` and `H0`. Equations: at each interior node the complementarity
+//! Unknowns: `P_1 .. P_{n-1}` and `Delta`. Equations: at each interior node the complementarity
 //! form of Reynolds with cavitation, `min(P_i, -L_i(P) / c_i) = 0` (`L_i` the discrete
-//! Reynolds operator of [`Level::operator`], `c_i = |dL_i/dP_i|`): either `P_i = 0` and the
+//! Reynolds operator of [`LineLevelFields::operator`], `c_i = |dL_i/dP_i|`): either `P_i = 0` and the
 //! fluid would cavitate (`L_i <= 0`), or `P_i > 0` and Reynolds holds. This is the
 //! `P = max(P, 0)` rule of the paper, written so that Newton sees it. Plus the force balance
 //! `sum P_j dX = pi/2`.
@@ -12,15 +12,15 @@
 //! The Jacobian is assembled exactly except for the local derivatives of the coefficient
 //! `eps(P, H, dP/dX)`, which are central differences of that scalar function.
 
-use super::level::{Level, Model, LOAD};
+use super::level::{LineLevelFields, LineModel, LOAD};
 use crate::solver::{dense, line_search};
 
 /// Relative step of the local finite differences of `eps` (central differences: truncation
 /// ~ 1e-12 relative, round-off ~ 1e-10 relative; the Newton step tolerates far more).
 const FD_REL: f64 = 1e-5;
 
-/// `eps = rho H^3 / (eta_eff lambda)` at one node, as [`Level::update_coefficients`] forms it.
-fn eps_at(m: &Model, p: f64, h: f64, slope: f64) -> f64 {
+/// `eps = rho H^3 / (eta_eff lambda)` at one node, as [`LineLevelFields::update_coefficients`] forms it.
+fn eps_at(m: &LineModel, p: f64, h: f64, slope: f64) -> f64 {
     let rho = if m.density.is_incompressible() {
         1.0
     } else {
@@ -46,9 +46,9 @@ struct Eval {
     norm: f64,
 }
 
-/// Film, coefficients and `phi` for the level's current pressure and `h0`.
-fn evaluate(level: &mut Level, model: &Model, h0: f64, scale: &[f64]) -> Eval {
-    level.update_film(h0);
+/// Film, coefficients and `phi` for the level's current pressure and `delta`.
+fn evaluate(level: &mut LineLevelFields, model: &LineModel, delta: f64, scale: &[f64]) -> Eval {
+    level.update_film(delta);
     level.update_coefficients(model);
     let n = level.n;
     let mut phi = vec![0.0; n];
@@ -63,7 +63,7 @@ fn evaluate(level: &mut Level, model: &Model, h0: f64, scale: &[f64]) -> Eval {
 
 /// `|dL_i/dP_i|` from the Poiseuille stencil and the wedge term's own kernel coefficient: the
 /// scale that makes `-L_i / c_i` a pressure.
-fn row_scales(level: &Level) -> Vec<f64> {
+fn row_scales(level: &LineLevelFields) -> Vec<f64> {
     let k = level.deformation.kernel();
     let n = level.n;
     let mut c = vec![1.0; n + 1];
@@ -81,8 +81,8 @@ fn row_scales(level: &Level) -> Vec<f64> {
     c
 }
 
-/// The Jacobian of `phi` (row-major, `n x n`; column `n - 1` is `H0`).
-fn jacobian(level: &Level, model: &Model, scale: &[f64]) -> Vec<f64> {
+/// The Jacobian of `phi` (row-major, `n x n`; column `n - 1` is `Delta`).
+fn jacobian(level: &LineLevelFields, model: &LineModel, scale: &[f64]) -> Vec<f64> {
     let n = level.n;
     let dx = level.dx;
     let kern = level.deformation.kernel();
@@ -153,7 +153,7 @@ fn jacobian(level: &Level, model: &Model, scale: &[f64]) -> Vec<f64> {
             (i, (p[i - 1] + p[i + 1] - 2.0 * p[i]) * r2),
             (i + 1, (p[i + 1] - p[i]) * r2),
         ];
-        // Weights w_k of the dense kernel part: sum_k w_k K(k - j), and the H0 column.
+        // Weights w_k of the dense kernel part: sum_k w_k K(k - j), and the Delta column.
         let mut dense_w: Vec<(usize, f64)> = Vec::with_capacity(6);
         let mut dh0 = 0.0;
         for &(k, gk) in &g {
@@ -199,68 +199,68 @@ fn jacobian(level: &Level, model: &Model, scale: &[f64]) -> Vec<f64> {
 }
 
 /// Outcome of [`iterate`].
-pub(crate) struct Outcome {
+pub(crate) struct NewtonRun {
     /// Whether the tolerances were met.
     pub converged: bool,
     /// Iterations run.
     pub iterations: usize,
 }
 
-/// Newton iterations on `level` from its current pressure and `h0` until the mean absolute
+/// Newton iterations on `level` from its current pressure and `delta` until the mean absolute
 /// Reynolds residual is below `tol` and the relative load error below `load_tol`, or
-/// `max_iter` steps. After each step `report(residual, load_error, h0)` is called; its return
+/// `max_iter` steps. After each step `report(residual, load_error, delta)` is called; its return
 /// value `false` stops the iteration.
 pub(crate) fn iterate(
-    level: &mut Level,
-    model: &Model,
-    h0: &mut f64,
+    level: &mut LineLevelFields,
+    model: &LineModel,
+    delta: &mut f64,
     max_iter: usize,
     tol: f64,
     load_tol: f64,
-    report: &mut dyn FnMut(&Level, f64, f64, f64) -> bool,
-) -> Outcome {
+    report: &mut dyn FnMut(&LineLevelFields, f64, f64, f64) -> bool,
+) -> NewtonRun {
     let n = level.n;
-    level.update_film(*h0);
+    level.update_film(*delta);
     level.update_coefficients(model);
     let mut scale = row_scales(level);
-    let mut ev = evaluate(level, model, *h0, &scale);
+    let mut ev = evaluate(level, model, *delta, &scale);
     for it in 1..=max_iter {
         let jac = jacobian(level, model, &scale);
         let mut step: Vec<f64> = ev.phi.iter().map(|v| -v).collect();
         if !dense::solve(&jac, &mut step, n) {
-            return Outcome {
+            return NewtonRun {
                 converged: false,
                 iterations: it,
             };
         }
         // Backtracking on |phi|: halve the step until it decreases (or the smallest damping).
         let p_old = level.p.clone();
-        let h0_old = *h0;
+        let delta_old = *delta;
         line_search::backtrack(ev.norm, |omega| {
             for i in 1..n {
                 level.p[i] = (p_old[i] + omega * step[i - 1]).max(0.0);
             }
-            *h0 = h0_old + omega * step[n - 1];
-            evaluate(level, model, *h0, &scale).norm
+            *delta = delta_old + omega * step[n - 1];
+            evaluate(level, model, *delta, &scale).norm
         });
         scale = row_scales(level);
-        ev = evaluate(level, model, *h0, &scale);
+        ev = evaluate(level, model, *delta, &scale);
         let residual = level.residual_norm();
         let load_error = ((level.load() - LOAD) / LOAD).abs();
-        if !report(level, residual, load_error, *h0) {
-            return Outcome {
+        if !report(level, residual, load_error, *delta) {
+            return NewtonRun {
                 converged: false,
                 iterations: it,
             };
         }
         if residual < tol && load_error < load_tol {
-            return Outcome {
+            return NewtonRun {
                 converged: true,
                 iterations: it,
             };
         }
     }
-    Outcome {
+    NewtonRun {
         converged: false,
         iterations: max_iter,
     }

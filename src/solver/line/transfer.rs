@@ -1,11 +1,11 @@
 //! Transfer of a converged solution from a grid to the next finer one (ratio 2): the start of
 //! the nested iteration.
 
-use super::level::Level;
+use super::level::LineLevelFields;
 
 /// The converged coarse pressure interpolated (four-point cubic, one
 /// sided next to the ends) to the fine grid, projected on `P >= 0`.
-pub(crate) fn interpolate_solution(coarse: &Level, fine: &mut Level) {
+pub(crate) fn interpolate_solution(coarse: &LineLevelFields, fine: &mut LineLevelFields) {
     let n = fine.n;
     let c = |k: usize| coarse.p[k / 2];
     for i in 0..=n {

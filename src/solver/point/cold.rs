@@ -35,10 +35,10 @@ pub(super) fn converge(
     let g = &problem.groups;
     // Initial Delta: the Eq. (10) central film minus the Hertzian approach (W(0) = 1).
     // A nested domain starts from its surroundings: their pressure and film constant.
-    let h0 = surround
+    let delta = surround
         .as_ref()
         .map_or(hc_eq10(g.m, g.l) / g.moes_film_scale - 1.0, |s| s.delta());
-    let mut mg = Hierarchy::for_problem(problem, params, surround, h0);
+    let mut mg = Hierarchy::for_problem(problem, params, surround, delta);
     let top = mg.levels.len() - 1;
     // Full multigrid: Hertzian pressure on the coarsest grid, then each finer level starts
     // from the interpolated solution of the one below; each level's state after its cycles
@@ -75,7 +75,7 @@ pub(super) fn converge(
         fmg.push(CoarseSolution {
             level: level_number(&mg.levels[k]),
             p: mg.levels[k].p.clone(),
-            delta: mg.h0,
+            delta: mg.delta,
             residual: None,
         });
     }

@@ -44,7 +44,7 @@ pub(super) struct Work {
 
 impl Work {
     /// Counts a level's outcome; whether it converged.
-    pub(super) fn add(&mut self, outcome: &newton::Outcome) -> bool {
+    pub(super) fn add(&mut self, outcome: &newton::NewtonKrylovRun) -> bool {
         self.newton_steps += outcome.iterations;
         self.krylov_iterations += outcome.krylov_iterations;
         outcome.converged

@@ -45,20 +45,20 @@ pub(super) fn stalled(history: &[f64], window: usize) -> bool {
 /// A level's pressure and the film constant `Delta`: a start of the finish.
 pub(super) struct State {
     pub(super) p: Vec<f64>,
-    h0: f64,
+    delta: f64,
 }
 
 impl State {
     pub(super) fn of(mg: &Hierarchy, k: usize) -> Self {
         State {
             p: mg.levels[k].p.clone(),
-            h0: mg.h0,
+            delta: mg.delta,
         }
     }
 
     pub(super) fn restore(&self, mg: &mut Hierarchy, k: usize) {
         mg.levels[k].p.copy_from_slice(&self.p);
-        mg.h0 = self.h0;
+        mg.delta = self.delta;
     }
 }
 
@@ -97,7 +97,7 @@ pub(super) fn cycle_progress(
 }
 
 /// The level number of a grid (`2^(level+1)` intervals along `X`).
-pub(super) fn level_number(level: &level::Level) -> u32 {
+pub(super) fn level_number(level: &level::LevelFields) -> u32 {
     level.grid.nx.trailing_zeros() - 1
 }
 
@@ -136,7 +136,8 @@ pub(super) fn converge_by_cycles(
         let residual = progress.residual;
         history.push(residual);
         let level = &mg.levels[k];
-        if !residual.is_finite() || !mg.h0.is_finite() || level.p.iter().any(|v| !v.is_finite()) {
+        if !residual.is_finite() || !mg.delta.is_finite() || level.p.iter().any(|v| !v.is_finite())
+        {
             return Cycles {
                 converged: false,
                 history,

@@ -23,7 +23,7 @@
 //! far field off at the edge moves a fraction `~ 2 g(0) / (x_start * LOAD)` of the load
 //! into the contact, a 1/distance error that made the friction of light, viscous contacts
 //! depend on the domain by tens of per cent. The leading correction to the asymptote is the
-//! film constant, relative order `H0 / (m r^2)`.
+//! film constant, relative order `Delta / (m r^2)`.
 
 use super::nested::Surround;
 use crate::physics::viscosity::Viscosity;
@@ -52,7 +52,7 @@ pub(crate) struct FarField {
     /// `g'(psi)` at the same points.
     dg: Vec<f64>,
     /// The film constant's correction `g1` (the reduced pressure is
-    /// `g / r^3 + H0 g1 / r^5`), at the same points.
+    /// `g / r^3 + Delta g1 / r^5`), at the same points.
     g1: Vec<f64>,
     /// `g1'` at the same points.
     dg1: Vec<f64>,
@@ -177,8 +177,8 @@ impl FarField {
     /// `g_h v_p - g_p v_h = 0`, whose derivative is `-2 S cos(psi) g_h`: `phi` is the
     /// first zero of `int_0^psi cos(s) g_h(s) ds` past `pi/2`.
     ///
-    /// The film constant `H0` in `H = H0 + m r^2` adds `H0 g1 / r^5`: with
-    /// `H^3 = m^3 r^6 + 3 m^2 H0 r^4 + ...`, the order `1/r` of the equation gives
+    /// The film constant `Delta` in `H = Delta + m r^2` adds `Delta g1 / r^5`: with
+    /// `H^3 = m^3 r^6 + 3 m^2 Delta r^4 + ...`, the order `1/r` of the equation gives
     /// `(m^3 g1')' - 5 m^3 g1 = 9 m^2 g - 3 (m^2 g')'`, with `g1'(0) = 0` and `g1(phi) = 0`
     /// (the cavitation angle's own shift leaves `g1` free there since `g'(phi) = 0`).
     pub fn new(shape: f64, kappa: f64, lambda: f64, viscosity: Viscosity) -> Self {
@@ -262,9 +262,9 @@ impl FarField {
         hermite(&self.g1, &self.dg1, self.phi, psi).0
     }
 
-    /// The reduced pressure `q = g / r^3 + h0 g1 / r^5` of the asymptote at `(X, Y)` for
-    /// the film constant `h0`.
-    pub fn reduced_pressure(&self, x: f64, y: f64, h0: f64) -> f64 {
+    /// The reduced pressure `q = g / r^3 + delta g1 / r^5` of the asymptote at `(X, Y)` for
+    /// the film constant `delta`.
+    pub fn reduced_pressure(&self, x: f64, y: f64, delta: f64) -> f64 {
         let yp = y / self.kappa;
         let r2 = x * x + yp * yp;
         if r2 == 0.0 {
@@ -273,16 +273,16 @@ impl FarField {
         // Angle from the upstream axis (-X).
         let psi = yp.atan2(-x);
         let r3 = r2 * r2.sqrt();
-        self.amplitude * (self.g_at(psi) / r3 + h0 * self.g1_at(psi) / (r3 * r2))
+        self.amplitude * (self.g_at(psi) / r3 + delta * self.g1_at(psi) / (r3 * r2))
     }
 
-    /// The pressure `P` of the asymptote at `(X, Y)` for the film constant `h0`: the
+    /// The pressure `P` of the asymptote at `(X, Y)` for the film constant `delta`: the
     /// reduced pressure mapped back through the viscosity law.
-    pub fn pressure(&self, x: f64, y: f64, h0: f64) -> f64 {
+    pub fn pressure(&self, x: f64, y: f64, delta: f64) -> f64 {
         if let Some(s) = &self.surround {
             return s.pressure(x, y);
         }
-        self.pressure_of_reduced(self.reduced_pressure(x, y, h0))
+        self.pressure_of_reduced(self.reduced_pressure(x, y, delta))
     }
 
     /// `P` with `int_0^P dP'/eta_bar(P') = q`: for Barus `-ln(1 - alpha_bar q)/alpha_bar`,
@@ -320,7 +320,7 @@ impl FarField {
 
     /// Fits the amplitude to a solution: the least-squares factor between the reduced
     /// pressures `q(P)` of the pressurised nodes `RING` cells inside the edge of `grid` and
-    /// the asymptote's there (film constant `h0`). Returns that factor's distance from 1,
+    /// the asymptote's there (film constant `delta`). Returns that factor's distance from 1,
     /// how far the solution is from agreeing with its edge. Only the asymptote's shape is
     /// then assumed, not its amplitude: where the far field carries much of the load
     /// (`lambda` of order 1 and above) the a-priori amplitude's error would decide the
@@ -332,7 +332,7 @@ impl FarField {
     /// settle to 1e-4). So the second fit on a grid takes the secant step to the fixed point
     /// `F(A) = A` through the last two, where their slope lies in `0..0.9`; otherwise, and
     /// on the first fit on a grid, the fitted amplitude itself.
-    pub fn fit(&mut self, grid: &Grid, p: &[f64], h0: f64) -> f64 {
+    pub fn fit(&mut self, grid: &Grid, p: &[f64], delta: f64) -> f64 {
         const RING: usize = 4;
         let (mut num, mut den) = (0.0, 0.0);
         for j in RING..=grid.ny - RING {
@@ -342,7 +342,7 @@ impl FarField {
                 if !on_ring || p[k] <= 0.0 {
                     continue;
                 }
-                let s = self.reduced_pressure(grid.x(i), grid.y(j), h0);
+                let s = self.reduced_pressure(grid.x(i), grid.y(j), delta);
                 if s <= 0.0 {
                     continue;
                 }
@@ -393,7 +393,7 @@ impl FarField {
     /// `int_b^inf P(g / r^3) r dr = int_0^1 P(g t^3 / b^3) b^2 / t^3 dt` (`t = b / r`;
     /// the integrand tends to `g / b`), Gauss-Legendre in `t` and the midpoint rule in the
     /// angle, times `kappa` for `dY = kappa dY'`.
-    pub fn outside_load(&self, domain: &Domain, h0: f64) -> f64 {
+    pub fn outside_load(&self, domain: &Domain, delta: f64) -> f64 {
         if let Some(s) = &self.surround {
             return s.outside_load();
         }
@@ -415,7 +415,7 @@ impl FarField {
                 }
             };
             let b = to_edge(dx, x0, x1).min(to_edge(dy, -y1, y1));
-            let (g, g1) = (self.g_at(psi), h0 * self.g1_at(psi));
+            let (g, g1) = (self.g_at(psi), delta * self.g1_at(psi));
             load += self.ray_integral(self.amplitude * g, self.amplitude * g1, b) * dpsi;
         }
         load * self.kappa

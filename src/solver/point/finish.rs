@@ -15,7 +15,7 @@ pub(super) fn finish(
     params: &Params,
     observe: &mut dyn FnMut(&Progress),
     history: &mut Vec<f64>,
-) -> newton::Outcome {
+) -> newton::NewtonKrylovRun {
     let mut outcome = newton_solve(mg, k, params, observe, history);
     if params.edge != Edge::FittedFarField {
         return outcome;
@@ -29,7 +29,7 @@ pub(super) fn finish(
             break;
         }
         let next = newton_solve(mg, k, params, observe, history);
-        outcome = newton::Outcome {
+        outcome = newton::NewtonKrylovRun {
             converged: next.converged,
             iterations: outcome.iterations + next.iterations,
             krylov_iterations: outcome.krylov_iterations + next.krylov_iterations,
@@ -50,16 +50,16 @@ fn newton_solve(
     params: &Params,
     observe: &mut dyn FnMut(&Progress),
     history: &mut Vec<f64>,
-) -> newton::Outcome {
+) -> newton::NewtonKrylovRun {
     let model = mg.model;
-    let mut h0 = mg.h0;
+    let mut delta = mg.delta;
     let level = &mut mg.levels[k];
     let mut before = level.p.clone();
     let mut steps = 0;
     let outcome = newton::iterate(
         level,
         &model,
-        &mut h0,
+        &mut delta,
         &params.newton,
         &params.stopping,
         if mg.warm {
@@ -67,7 +67,7 @@ fn newton_solve(
         } else {
             newton::FIRST_FORCING
         },
-        &mut |level: &level::Level, step: &newton::Step| {
+        &mut |level: &level::LevelFields, step: &newton::NewtonStep| {
             steps += 1;
             history.push(step.residual);
             observe(&Progress {
@@ -85,6 +85,6 @@ fn newton_solve(
             before.copy_from_slice(&level.p);
         },
     );
-    mg.h0 = h0;
+    mg.delta = delta;
     outcome
 }

@@ -1,13 +1,13 @@
 //! Film thickness and reduced friction, Eq. (8), from a converged point-contact solution.
 
-use super::level::{Level, Model, LOAD};
+use super::level::{LevelFields, Model, LOAD};
 use super::PointSolution;
 use crate::physics::case::Problem;
 use crate::physics::evaluations::{record, Effect};
 use crate::solver::output::{Film, Friction};
 
 /// Central film (at `X = Y = 0`) and minimum film, in `H = h/c` and in Moes units.
-pub(crate) fn film(level: &Level, moes_scale: f64) -> Film {
+pub(crate) fn film(level: &LevelFields, moes_scale: f64) -> Film {
     Film::of(level.h_central(), &level.h, moes_scale)
 }
 
@@ -36,7 +36,7 @@ pub enum FrictionRegion {
 /// for a Newtonian fluid). Rolling part (only when `rolling` is set): the Poiseuille shear
 /// on the surface, `(h/2) dp/dx / tau0 = (6 N / lambda) H dP/dX`, central differences.
 pub(crate) fn friction(
-    level: &Level,
+    level: &LevelFields,
     model: &Model,
     rolling_scale: Option<f64>,
     region: FrictionRegion,

@@ -17,7 +17,7 @@
 //! The local derivatives `eps_P`, `eps_H`, `rho_P` of the coefficient functions are central
 //! differences of those scalar functions; everything else is exact.
 
-use super::level::{Level, Model, LOAD};
+use super::level::{LevelFields, Model, LOAD};
 use crate::solver::bordered_lu::{BorderedLu, Entry, LuStorage};
 use crate::solver::deformation::Kernel;
 
@@ -33,7 +33,7 @@ fn central(f: impl Fn(f64) -> (f64, f64, f64), x: f64, scale: f64) -> [f64; 3] {
 }
 
 /// The upstream wedge difference at column `i`: `(offset along X, weight)` of `rho H`
-/// (second order from `i = 2`, first order at `i = 1`), as [`Level::wedge`] uses it.
+/// (second order from `i = 2`, first order at `i = 1`), as [`LevelFields::wedge`] uses it.
 pub(super) fn wedge_weights(i: usize) -> &'static [(isize, f64)] {
     if i >= 2 {
         &[(0, 1.5), (-1, -2.0), (-2, 0.5)]
@@ -75,7 +75,7 @@ impl Jacobian {
     /// Linearises `level` (film and coefficients current) for the `active` nodes, those
     /// marked in `cavitating` with identity rows.
     pub fn new(
-        level: &Level,
+        level: &LevelFields,
         model: &Model,
         active: Vec<usize>,
         cavitating: Vec<bool>,
@@ -113,12 +113,12 @@ impl Jacobian {
     }
 
     /// Weight of each pressure unknown in the force-balance row.
-    fn load_weight(level: &Level) -> f64 {
+    fn load_weight(level: &LevelFields) -> f64 {
         level.grid.hx * level.grid.hy / LOAD
     }
 
     /// `out = J v` exactly: the film change by the FFT deformation of `dP`.
-    pub fn apply(&mut self, level: &mut Level, v: &[f64], out: &mut [f64]) {
+    pub fn apply(&mut self, level: &mut LevelFields, v: &[f64], out: &mut [f64]) {
         let g = level.grid;
         let n = self.len();
         self.dp.iter_mut().for_each(|x| *x = 0.0);
@@ -163,7 +163,7 @@ impl Jacobian {
     }
 
     /// Row `c`'s local part and film dependence (unscaled `dL_c`).
-    fn row(&self, level: &Level, c: usize) -> Row {
+    fn row(&self, level: &LevelFields, c: usize) -> Row {
         let g = level.grid;
         let px = g.px();
         let (i, j) = (c % px, c / px);
@@ -223,7 +223,7 @@ impl Jacobian {
     /// local stencil; returns the `Delta` column.
     fn assemble(
         &self,
-        level: &Level,
+        level: &LevelFields,
         radius: Option<usize>,
         local_only: impl Fn(usize, usize) -> bool,
         mut emit: impl FnMut(usize, usize, f64),
@@ -295,7 +295,7 @@ impl Jacobian {
     /// factorisation's, reused.
     pub fn preconditioner(
         &self,
-        level: &Level,
+        level: &LevelFields,
         radius: usize,
         local_rows: bool,
         storage: LuStorage,
@@ -316,7 +316,7 @@ impl Jacobian {
 
     /// The whole Jacobian, dense row-major `len() x len()`: the oracle of the tests.
     #[cfg(test)]
-    pub fn dense(&self, level: &Level) -> Vec<f64> {
+    pub fn dense(&self, level: &LevelFields) -> Vec<f64> {
         let n = self.len();
         let mut jac = vec![0.0; n * n];
         let delta = self.assemble(level, None, |_, _| false, |r, c, v| jac[r * n + c] = v);

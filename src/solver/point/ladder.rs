@@ -92,7 +92,7 @@ fn converge_rung(
     match warm {
         Some(w) => {
             mg.levels[k].p.copy_from_slice(&w.p);
-            mg.h0 = w.delta;
+            mg.delta = w.delta;
         }
         None => inject(mg, k),
     }
@@ -137,7 +137,7 @@ pub(super) fn output_errors(
     let mut levels = vec![values(mg, top, params)];
     let mut solutions = Vec::new();
     let mut stopped = None;
-    let h0 = mg.h0;
+    let delta = mg.delta;
     let sweeps = mg.set_coarsest_sweeps(LADDER_COARSEST_SWEEPS);
     for step in 1..=params.accuracy.error_levels as usize {
         // The hierarchy's coarsest level is solved by relaxation alone: never a top.
@@ -175,11 +175,11 @@ pub(super) fn output_errors(
         solutions.push(CoarseSolution {
             level,
             p: mg.levels[k].p.clone(),
-            delta: mg.h0,
+            delta: mg.delta,
             residual: Some(residual),
         });
     }
-    mg.h0 = h0;
+    mg.delta = delta;
     mg.set_coarsest_sweeps(sweeps);
     (
         OutputErrors {

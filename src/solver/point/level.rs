@@ -11,7 +11,7 @@ pub(crate) use crate::physics::hertz::DIMENSIONLESS_LOAD as LOAD;
 
 /// Fields of one level.
 #[derive(Debug)]
-pub(crate) struct Level {
+pub(crate) struct LevelFields {
     pub grid: Grid,
     pub deformation: Deformation,
     /// Pressure `P`.
@@ -41,19 +41,19 @@ pub(crate) struct Level {
     pub rho: Vec<f64>,
     /// `rho H` at the nodes.
     pub rh: Vec<f64>,
-    /// `Delta` of the last [`Level::refresh`] while film and coefficients are still those
-    /// of [`Level::refreshed_p`] (any other update clears it).
-    refreshed_h0: Option<u64>,
-    /// The pressure of the last [`Level::refresh`].
+    /// `Delta` of the last [`LevelFields::refresh`] while film and coefficients are still those
+    /// of [`LevelFields::refreshed_p`] (any other update clears it).
+    refreshed_delta: Option<u64>,
+    /// The pressure of the last [`LevelFields::refresh`].
     refreshed_p: Vec<f64>,
 }
 
-impl Level {
+impl LevelFields {
     /// A level on `grid` with `P = 0` on its boundary and the whole load: the far field, if
-    /// any, is put on it when it becomes the top ([`Level::set_far_field`]).
+    /// any, is put on it when it becomes the top ([`LevelFields::set_far_field`]).
     pub fn new(grid: Grid, model: &Model) -> Self {
         let n = grid.len();
-        Level {
+        LevelFields {
             deformation: Deformation::new(&grid, model.kappa, model.ell_k),
             p: vec![0.0; n],
             f: vec![0.0; n],
@@ -68,44 +68,44 @@ impl Level {
             ey: vec![0.0; n],
             rho: vec![1.0; n],
             rh: vec![0.0; n],
-            refreshed_h0: None,
+            refreshed_delta: None,
             refreshed_p: Vec::new(),
             grid,
         }
     }
 
-    /// Film and coefficients for the current `P` and `h0`, recomputed only where either
+    /// Film and coefficients for the current `P` and `delta`, recomputed only where either
     /// changed since the last refresh (bit for bit): a cycle's first sweep follows the
     /// residual evaluation of the same state, and one of the five updates of a V(2,1)
     /// cycle is saved.
-    pub fn refresh(&mut self, h0: f64, model: &Model) {
-        if self.refreshed_h0 == Some(h0.to_bits()) && self.refreshed_p == self.p {
+    pub fn refresh(&mut self, delta: f64, model: &Model) {
+        if self.refreshed_delta == Some(delta.to_bits()) && self.refreshed_p == self.p {
             return;
         }
-        self.update_film(h0);
+        self.update_film(delta);
         self.update_coefficients(model);
         self.refreshed_p.clone_from(&self.p);
-        self.refreshed_h0 = Some(h0.to_bits());
+        self.refreshed_delta = Some(delta.to_bits());
     }
 
-    /// Marks film and coefficients as stale for [`Level::refresh`]: the film equation's
+    /// Marks film and coefficients as stale for [`LevelFields::refresh`]: the film equation's
     /// right-hand side changed.
     pub fn invalidate(&mut self) {
-        self.refreshed_h0 = None;
+        self.refreshed_delta = None;
     }
 
     /// Eq. (6): `H = Delta + hrhs + W(P)`.
-    pub fn update_film(&mut self, h0: f64) {
-        self.refreshed_h0 = None;
+    pub fn update_film(&mut self, delta: f64) {
+        self.refreshed_delta = None;
         self.deformation.apply(&self.p, &mut self.w);
         for ((h, r), w) in self.h.iter_mut().zip(&self.hrhs).zip(&self.w) {
-            *h = h0 + r + w;
+            *h = delta + r + w;
         }
     }
 
     /// Coefficients of Eq. (1) from the current `P` and `H`.
     pub fn update_coefficients(&mut self, m: &Model) {
-        self.refreshed_h0 = None;
+        self.refreshed_delta = None;
         for k in 0..self.p.len() {
             let h = self.h[k];
             let (ex, ey, rho) = m.coefficients(self.p[k], h);
@@ -191,12 +191,12 @@ impl Level {
         self.grid.at_centre(&self.h)
     }
 
-    /// The far field `far` for the film constant `h0` as this level's top-level boundary
-    /// condition: its pressure on the boundary nodes ([`Level::edge`], copied into `P`) and
-    /// its outside load taken off the force balance ([`Level::load`], `rg`).
-    pub fn set_far_field(&mut self, far: &FarField, h0: f64) {
-        self.edge = self.grid.sample_boundary(|x, y| far.pressure(x, y, h0));
-        self.load = LOAD - far.outside_load(&self.grid.domain(), h0);
+    /// The far field `far` for the film constant `delta` as this level's top-level boundary
+    /// condition: its pressure on the boundary nodes ([`LevelFields::edge`], copied into `P`) and
+    /// its outside load taken off the force balance ([`LevelFields::load`], `rg`).
+    pub fn set_far_field(&mut self, far: &FarField, delta: f64) {
+        self.edge = self.grid.sample_boundary(|x, y| far.pressure(x, y, delta));
+        self.load = LOAD - far.outside_load(&self.grid.domain(), delta);
         self.rg = -self.load;
         for k in self.grid.boundary() {
             self.p[k] = self.edge[k];

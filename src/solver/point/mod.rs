@@ -303,7 +303,7 @@ fn solve_with(
             let finest = CoarseSolution {
                 level: level_number(&mg.levels[top]),
                 p: mg.levels[top].p.clone(),
-                delta: mg.h0,
+                delta: mg.delta,
                 residual: Some(mg.residual_norm(top).0),
             };
             warm_coarser = std::iter::once(finest).chain(coarser).collect();
@@ -316,7 +316,7 @@ fn solve_with(
     }
     let fine = mg.finest();
     let load_error = (fine.load_defect() / LOAD).abs();
-    let (grid, p, h, delta) = (fine.grid, fine.p.clone(), fine.h.clone(), mg.h0);
+    let (grid, p, h, delta) = (fine.grid, fine.p.clone(), fine.h.clone(), mg.delta);
     let level = level_number(fine);
     Ok(PointSolution {
         grid,

@@ -2,7 +2,7 @@
 //! grid (Venner and Lubrecht 2000).
 
 use super::far_field::FarField;
-use super::level::{Level, Model, LOAD};
+use super::level::{LevelFields, Model, LOAD};
 use super::nested::Surround;
 use super::relax::{relax, LineScratch};
 use super::transfer::{coarsen, correct, interpolate_solution};
@@ -11,15 +11,15 @@ use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
 use std::sync::Arc;
 
-/// Levels from coarsest (index 0) to finest, the global film constant `Delta` (`h0`), and
+/// Levels from coarsest (index 0) to finest, the global film constant `Delta` (`delta`), and
 /// the relaxation parameters.
 #[derive(Debug)]
 pub(crate) struct Hierarchy {
-    pub levels: Vec<Level>,
+    pub levels: Vec<LevelFields>,
     pub model: Model,
     /// The flooded inlet beyond the domain.
     far: FarField,
-    pub h0: f64,
+    pub delta: f64,
     /// The scale of the rolling friction (`Problem`'s), where it is computed: the cycles'
     /// stopping rule watches it.
     pub rolling_scale: Option<f64>,
@@ -36,12 +36,12 @@ pub(crate) struct Hierarchy {
 
 impl Hierarchy {
     /// A hierarchy for `problem` on `params`' levels and domain, the far field of its edge
-    /// (or the surroundings `surround` of a nested domain), and the film constant `h0`.
+    /// (or the surroundings `surround` of a nested domain), and the film constant `delta`.
     pub fn for_problem(
         problem: &Problem,
         params: &Params,
         surround: Option<&Arc<Surround>>,
-        h0: f64,
+        delta: f64,
     ) -> Self {
         let model = Model::new(problem);
         let g = &problem.groups;
@@ -53,21 +53,21 @@ impl Hierarchy {
         };
         let far = FarField::new(problem.shape, g.kappa, far_lambda, problem.viscosity)
             .with_surround(surround.cloned());
-        let mut mg = Hierarchy::new(model, far, &params.domain, params, h0);
+        let mut mg = Hierarchy::new(model, far, &params.domain, params, delta);
         mg.rolling_scale = params.friction.rolling.then(|| g.rolling_stress_scale());
         mg
     }
 
     /// Builds every level from `params.multigrid.coarsest_level` to `params.level` on `domain`.
-    pub fn new(model: Model, far: FarField, domain: &Domain, params: &Params, h0: f64) -> Self {
+    pub fn new(model: Model, far: FarField, domain: &Domain, params: &Params, delta: f64) -> Self {
         let levels = (params.multigrid.coarsest_level..=params.level)
-            .map(|l| Level::new(Grid::level(domain, l), &model))
+            .map(|l| LevelFields::new(Grid::level(domain, l), &model))
             .collect();
         Hierarchy {
             levels,
             model,
             far,
-            h0,
+            delta,
             rolling_scale: None,
             warm: false,
             gain: params.multigrid.force_balance_gain,
@@ -81,7 +81,7 @@ impl Hierarchy {
     pub fn add_finer_level(&mut self, domain: &Domain) -> usize {
         let level = self.finest().grid.nx.trailing_zeros();
         let grid = Grid::level(domain, level);
-        self.levels.push(Level::new(grid, &self.model));
+        self.levels.push(LevelFields::new(grid, &self.model));
         self.levels.len() - 1
     }
 
@@ -90,14 +90,19 @@ impl Hierarchy {
         std::mem::replace(&mut self.params.multigrid.coarsest_sweeps, sweeps)
     }
 
-    pub fn finest(&self) -> &Level {
+    pub fn finest(&self) -> &LevelFields {
         self.levels
             .last()
             .expect("a hierarchy has at least one level")
     }
 
     pub fn relax(&mut self, k: usize) {
-        relax(&mut self.levels[k], &self.model, self.h0, &mut self.scratch);
+        relax(
+            &mut self.levels[k],
+            &self.model,
+            self.delta,
+            &mut self.scratch,
+        );
     }
 
     /// `Delta += gain * (sum P hx hy + rg)`: too much load lifts the surfaces. The load of a
@@ -112,7 +117,7 @@ impl Hierarchy {
             self.gain = (self.gain * 1.1).min(self.params.multigrid.force_balance_gain);
         }
         self.last_defect = defect;
-        self.h0 += self.gain * defect;
+        self.delta += self.gain * defect;
     }
 
     /// Solves the coarsest level by many sweeps, with a force-balance update after each
@@ -140,8 +145,8 @@ impl Hierarchy {
         {
             let (lo, hi) = self.levels.split_at_mut(k);
             let fine = &mut hi[0];
-            fine.refresh(self.h0, &self.model);
-            coarsen(fine, &mut lo[k - 1], &self.model, self.h0);
+            fine.refresh(self.delta, &self.model);
+            coarsen(fine, &mut lo[k - 1], &self.model, self.delta);
         }
         for _ in 0..self.params.multigrid.gamma {
             self.cycle(k - 1);
@@ -170,7 +175,7 @@ impl Hierarchy {
         let far = &self.far;
         level.hrhs = g.sample(|x, y| model.geometry(x, y) + far.film_offset(x, y));
         level.f.iter_mut().for_each(|v| *v = 0.0);
-        level.set_far_field(&self.far, self.h0);
+        level.set_far_field(&self.far, self.delta);
     }
 
     /// How far the far field on level `k`'s edge is from the one of the film constant as it
@@ -180,13 +185,13 @@ impl Hierarchy {
     pub fn edge_drift(&self, k: usize) -> (f64, f64) {
         let level = &self.levels[k];
         let g = level.grid;
-        let now = g.sample_boundary(|x, y| self.far.pressure(x, y, self.h0));
+        let now = g.sample_boundary(|x, y| self.far.pressure(x, y, self.delta));
         let largest = level.p.iter().fold(0.0f64, |m, v| m.max(v.abs()));
         let change = g
             .boundary()
             .map(|i| (now[i] - level.edge[i]).abs())
             .fold(0.0f64, f64::max);
-        let outside = LOAD - self.far.outside_load(&g.domain(), self.h0);
+        let outside = LOAD - self.far.outside_load(&g.domain(), self.delta);
         let pressure = if largest > 0.0 {
             change / largest
         } else {
@@ -199,8 +204,8 @@ impl Hierarchy {
     /// edge and in its force balance; returns the amplitude's relative change.
     pub fn fit_far_field(&mut self, k: usize) -> f64 {
         let level = &mut self.levels[k];
-        let change = self.far.fit(&level.grid, &level.p, self.h0);
-        level.set_far_field(&self.far, self.h0);
+        let change = self.far.fit(&level.grid, &level.p, self.delta);
+        level.set_far_field(&self.far, self.delta);
         change
     }
 
@@ -208,12 +213,12 @@ impl Hierarchy {
     /// the largest residual is.
     pub fn residual_norm(&mut self, k: usize) -> (f64, (f64, f64)) {
         let level = &mut self.levels[k];
-        level.refresh(self.h0, &self.model);
+        level.refresh(self.delta, &self.model);
         level.residual_norm()
     }
 
     /// Brings level `k`'s film and coefficients up to its pressure and the film constant.
     pub fn refresh(&mut self, k: usize) {
-        self.levels[k].refresh(self.h0, &self.model);
+        self.levels[k].refresh(self.delta, &self.model);
     }
 }

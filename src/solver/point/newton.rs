@@ -4,7 +4,7 @@
 //!
 //! Unknowns: `P` at the interior nodes and `Delta`. Equations: at each interior node the
 //! complementarity form of Reynolds with cavitation, `min(P, r / c) = 0` with `r = f - L(P)`
-//! the residual of [`Level::residual`] (the multigrid's own finest-level equations) and `c`
+//! the residual of [`LevelFields::residual`] (the multigrid's own finest-level equations) and `c`
 //! the magnitude of its own diagonal (so `r / c` is a pressure): either `P = 0` and the fluid
 //! would cavitate, or `P > 0` and Reynolds holds. Plus the force balance. The step
 //! linearises `min(P, r / c)` semi-smoothly: a Reynolds row where `r / c < P` (the
@@ -22,14 +22,14 @@
 //! projection on `P >= 0`.
 
 use super::jacobian::{wedge_weights, Jacobian};
-use super::level::{Level, Model, LOAD};
+use super::level::{LevelFields, Model, LOAD};
 use super::params::{NewtonParams, StoppingParams};
 use crate::solver::bordered_lu::{BorderedLu, LuStorage};
 use crate::solver::{gmres, line_search};
 
 /// `|dL/dP|` at every interior node: the Poiseuille stencil and the wedge term's own kernel
 /// coefficient. Dividing the residual by it makes a pressure.
-fn row_scales(level: &Level) -> Vec<f64> {
+fn row_scales(level: &LevelFields) -> Vec<f64> {
     let g = level.grid;
     let d0 = level.deformation.kernel().at(0, 0);
     let mut c = vec![1.0; g.len()];
@@ -51,8 +51,8 @@ struct Eval {
     norm: f64,
 }
 
-fn evaluate(level: &mut Level, model: &Model, h0: f64, scale: &[f64]) -> Eval {
-    level.refresh(h0, model);
+fn evaluate(level: &mut LevelFields, model: &Model, delta: f64, scale: &[f64]) -> Eval {
+    level.refresh(delta, model);
     let g = level.grid;
     let mut phi = vec![0.0; g.len()];
     let mut sum = 0.0;
@@ -72,7 +72,7 @@ fn evaluate(level: &mut Level, model: &Model, h0: f64, scale: &[f64]) -> Eval {
 }
 
 /// Outcome of [`iterate`].
-pub(crate) struct Outcome {
+pub(crate) struct NewtonKrylovRun {
     /// Whether the tolerances were met.
     pub converged: bool,
     /// Newton steps taken.
@@ -82,7 +82,7 @@ pub(crate) struct Outcome {
 }
 
 /// What [`iterate`] reports after each step.
-pub(crate) struct Step {
+pub(crate) struct NewtonStep {
     /// Mean absolute Reynolds residual.
     pub residual: f64,
     /// `(X, Y)` of the largest residual.
@@ -110,26 +110,26 @@ fn forcing(previous: f64, norm: f64, norm_before: f64) -> f64 {
 }
 
 /// Newton steps on `level` (its own equations: the top of the hierarchy) from its current
-/// pressure and `h0` until both tolerances of `stopping` are met, within `newton`'s steps;
+/// pressure and `delta` until both tolerances of `stopping` are met, within `newton`'s steps;
 /// the first step's forcing term is `first_forcing` ([`FIRST_FORCING`], or
 /// [`warm_first_forcing`] from a warm start). `report` hears of every step.
 pub(crate) fn iterate(
-    level: &mut Level,
+    level: &mut LevelFields,
     model: &Model,
-    h0: &mut f64,
+    delta: &mut f64,
     newton: &NewtonParams,
     stopping: &StoppingParams,
     first_forcing: f64,
-    report: &mut dyn FnMut(&Level, &Step),
-) -> Outcome {
+    report: &mut dyn FnMut(&LevelFields, &NewtonStep),
+) -> NewtonKrylovRun {
     let g = level.grid;
     // The row scales are those of this state: a level just interpolated (the next level of
     // a grid sequence, a refined level) holds the coefficients of its last relaxation, or
     // none at all (scaled by its wedge term alone, the first step of a refined level made
     // little progress: 6 Newton steps at level 8 instead of 5).
-    level.refresh(*h0, model);
+    level.refresh(*delta, model);
     let mut scale = row_scales(level);
-    let mut ev = evaluate(level, model, *h0, &scale);
+    let mut ev = evaluate(level, model, *delta, &scale);
     let mut eta = first_forcing;
     let mut norm_before = f64::NAN;
     let mut stalled = 0;
@@ -137,7 +137,7 @@ pub(crate) fn iterate(
     // factor itself, with the active set it was made for (see [`LAG_ITERATIONS`]).
     let mut storage = LuStorage::default();
     let mut kept: Option<(Vec<usize>, Vec<bool>, BorderedLu)> = None;
-    let mut outcome = Outcome {
+    let mut outcome = NewtonKrylovRun {
         converged: false,
         iterations: 0,
         krylov_iterations: 0,
@@ -227,7 +227,7 @@ pub(crate) fn iterate(
         }
         // Backtracking on |phi|: halve the step until it decreases (or the smallest damping).
         let p_old = level.p.clone();
-        let h0_old = *h0;
+        let delta_old = *delta;
         kept = Some((jac.active.clone(), jac.cavitating.clone(), preconditioner));
         let (column, cavitating) = (&jac.column, &jac.cavitating);
         let omega = line_search::backtrack(ev.norm, |omega| {
@@ -243,17 +243,17 @@ pub(crate) fn iterate(
                     (p_old[k] + omega * step[c]).max(0.0)
                 };
             }
-            *h0 = h0_old + omega * step[n - 1];
-            evaluate(level, model, *h0, &scale).norm
+            *delta = delta_old + omega * step[n - 1];
+            evaluate(level, model, *delta, &scale).norm
         });
         norm_before = ev.norm;
         scale = row_scales(level);
-        ev = evaluate(level, model, *h0, &scale);
+        ev = evaluate(level, model, *delta, &scale);
         let (residual, worst_at) = level.residual_norm();
         let load_error = ev.load.abs();
         report(
             level,
-            &Step {
+            &NewtonStep {
                 residual,
                 worst_at,
                 load_error,

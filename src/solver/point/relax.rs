@@ -4,15 +4,15 @@
 //! - Gauss-Seidel where `xi = eps/h^2` is large (the inlet and outside the contact), where the
 //!   Poiseuille term dominates and the operator is elliptic;
 //! - Jacobi distributive where `xi` is small (the high-pressure zone), where the equation
-//!   degenerates to the integral wedge term: a change `delta` at a node is applied with
-//!   `-delta/4` at its four neighbours, which turns the smooth-kernel integral operator into
+//!   degenerates to the integral wedge term: a change `c` at a node is applied with
+//!   `-c/4` at its four neighbours, which turns the smooth-kernel integral operator into
 //!   a local, diagonally dominant one.
 //!
 //! Each line's changes are solved together, with the elastic coupling along the line
 //! (the kernel coefficients, distributed for Jacobi points) in a band of 3 lower and 2 upper
 //! diagonals.
 
-use super::level::{Level, Model};
+use super::level::{LevelFields, Model};
 use crate::solver::banded::BandMatrix;
 
 /// `xi = eps/h^2` above which a point is relaxed by Gauss-Seidel.
@@ -46,7 +46,7 @@ impl LineScratch {
 
 /// Kernel coefficients along the line, `dk[m] = D(m, 0)` for Gauss-Seidel and the
 /// distributed `D(m,0) - (D(m+1,0) + D(|m-1|,0) + 2 D(m,1))/4` for Jacobi distributive.
-fn line_kernel(level: &Level) -> ([f64; 6], [f64; 6]) {
+fn line_kernel(level: &LevelFields) -> ([f64; 6], [f64; 6]) {
     let k = level.deformation.kernel();
     let mut gs = [0.0; 6];
     let mut jd = [0.0; 6];
@@ -59,9 +59,9 @@ fn line_kernel(level: &Level) -> ([f64; 6], [f64; 6]) {
 }
 
 /// One relaxation sweep over all lines of `level` (film and coefficients are brought up to
-/// date first, from the current pressure and `h0`: [`Level::refresh`]).
-pub(crate) fn relax(level: &mut Level, model: &Model, h0: f64, scratch: &mut LineScratch) {
-    level.refresh(h0, model);
+/// date first, from the current pressure and `delta`: [`LevelFields::refresh`]).
+pub(crate) fn relax(level: &mut LevelFields, model: &Model, delta: f64, scratch: &mut LineScratch) {
+    level.refresh(delta, model);
     let (dk_gs, dk_jd) = line_kernel(level);
     scratch.pnew.clear();
     scratch.pnew.extend_from_slice(&level.p);
@@ -74,7 +74,7 @@ pub(crate) fn relax(level: &mut Level, model: &Model, h0: f64, scratch: &mut Lin
 }
 
 fn relax_line(
-    level: &Level,
+    level: &LevelFields,
     j: usize,
     pnew: &mut [f64],
     dk_gs: &[f64; 6],
@@ -154,13 +154,13 @@ fn relax_line(
         } else {
             let old = pnew[c];
             pnew[c] = (old + OMEGA_JD * s.rhs[r]).max(0.0);
-            let delta = pnew[c] - old;
+            let change = pnew[c] - old;
             let neighbours = [c - 1, c + 1, c - g.px(), c + g.px()];
             if pnew[c] > 0.0 && neighbours.iter().all(|&k| pnew[k] > 0.0) {
                 let interior = [i > 1, i < g.nx - 1, j > 1, j < g.ny - 1];
                 for (k, ok) in neighbours.iter().zip(interior) {
                     if ok {
-                        pnew[*k] = (pnew[*k] - 0.25 * delta).max(0.0);
+                        pnew[*k] = (pnew[*k] - 0.25 * change).max(0.0);
                     }
                 }
             }

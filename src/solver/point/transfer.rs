@@ -5,7 +5,7 @@
 //! Near the cavitation boundary, where a fine neighbour has `P = 0`, the pressure is
 //! injected rather than weighted, and the correction is added only where `P > 0`.
 
-use super::level::{Level, Model};
+use super::level::{LevelFields, Model};
 
 /// Full-weighting stencil: centre 4, edges 2, corners 1, over 16.
 const FW: [(isize, isize, f64); 9] = [
@@ -22,7 +22,7 @@ const FW: [(isize, isize, f64); 9] = [
 
 /// Sets up the coarse problem of the FAS cycle from the fine level's current state
 /// (the fine film and coefficients must be current).
-pub(crate) fn coarsen(fine: &Level, coarse: &mut Level, model: &Model, h0: f64) {
+pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Model, delta: f64) {
     let (gf, gc) = (fine.grid, coarse.grid);
     let at = |i: usize, j: usize, di: isize, dj: isize| {
         gf.idx((i as isize + di) as usize, (j as isize + dj) as usize)
@@ -59,7 +59,7 @@ pub(crate) fn coarsen(fine: &Level, coarse: &mut Level, model: &Model, h0: f64) 
     }
     coarse.deformation.apply(&coarse.p, &mut coarse.w);
     for k in 0..gc.len() {
-        coarse.hrhs[k] = coarse.h[k] - h0 - coarse.w[k];
+        coarse.hrhs[k] = coarse.h[k] - delta - coarse.w[k];
     }
     coarse.update_coefficients(model);
     // Reynolds: restricted residual (zero where the fine pressure is zero) plus L_c(P_c).
@@ -83,7 +83,7 @@ pub(crate) fn coarsen(fine: &Level, coarse: &mut Level, model: &Model, h0: f64) 
 
 /// Adds the bilinearly interpolated coarse-grid correction `P_c - P_c,old` to the fine
 /// pressure where it is positive, then projects on `P >= 0`.
-pub(crate) fn correct(coarse: &Level, fine: &mut Level) {
+pub(crate) fn correct(coarse: &LevelFields, fine: &mut LevelFields) {
     let (gf, gc) = (fine.grid, coarse.grid);
     let e = |ic: usize, jc: usize| {
         let k = gc.idx(ic, jc);
@@ -124,7 +124,7 @@ fn cubic_line(n: usize, get: impl Fn(usize) -> f64, mut set: impl FnMut(usize, f
 
 /// Full-multigrid start: the converged coarse pressure interpolated (cubic) to the fine grid,
 /// projected on `P >= 0`, the fine level's far field on its boundary.
-pub(crate) fn interpolate_solution(coarse: &Level, fine: &mut Level) {
+pub(crate) fn interpolate_solution(coarse: &LevelFields, fine: &mut LevelFields) {
     let (gf, gc) = (fine.grid, coarse.grid);
     fine.p.iter_mut().for_each(|v| *v = 0.0);
     for jc in 0..gc.py() {

@@ -1,21 +1,21 @@
 use super::*;
 
 /// `div(H^3 grad q) / (lambda dH/dX) - 1` at `(x, y)` by central differences of step
-/// `d`, for the gap `h0 + S X^2 + (1 - S) Y^2` and the asymptote with film constant
-/// `h0_far` (0: the leading term alone).
+/// `d`, for the gap `delta + S X^2 + (1 - S) Y^2` and the asymptote with film constant
+/// `delta_far` (0: the leading term alone).
 fn relative_residual(
     ff: &FarField,
     shape: f64,
     lambda: f64,
     at: (f64, f64),
     d: f64,
-    h0: f64,
-    h0_far: f64,
+    delta: f64,
+    delta_far: f64,
 ) -> f64 {
     let (x, y) = at;
     let kappa2 = ff.kappa * ff.kappa;
-    let hgap = |x: f64, y: f64| h0 + shape * x * x + (1.0 - shape) * y * y;
-    let q = |x: f64, y: f64| ff.reduced_pressure(x, y, h0_far);
+    let hgap = |x: f64, y: f64| delta + shape * x * x + (1.0 - shape) * y * y;
+    let q = |x: f64, y: f64| ff.reduced_pressure(x, y, delta_far);
     let flux = |xa: f64, ya: f64, xb: f64, yb: f64, w: f64| {
         let hm = hgap(0.5 * (xa + xb), 0.5 * (ya + yb));
         w * hm * hm * hm * (q(xb, yb) - q(xa, ya)) / (d * d)
@@ -95,19 +95,19 @@ fn the_outside_load_of_a_far_edge_is_g_over_distance() {
     assert!((got / expect - 1.0).abs() < 1e-4, "{got} {expect}");
 }
 
-/// With a film constant `H0` the corrected asymptote leaves a residual of relative
-/// order `(H0 / m r^2)^2` in `div(H^3 grad q) = lambda dH/dX`, `H = H0 + m r^2`, where
-/// the leading term alone leaves order `H0 / m r^2`: doubling `r` divides the first by
-/// about 16 and the second by about 4 (measured 19 and 3.8 at `r` = 6 and 12, `H0` = 1,
+/// With a film constant `Delta` the corrected asymptote leaves a residual of relative
+/// order `(Delta / m r^2)^2` in `div(H^3 grad q) = lambda dH/dX`, `H = Delta + m r^2`, where
+/// the leading term alone leaves order `Delta / m r^2`: doubling `r` divides the first by
+/// about 16 and the second by about 4 (measured 19 and 3.8 at `r` = 6 and 12, `Delta` = 1,
 /// on the 1/2 ellipse; at `r` = 12 they are 9e-4 and 2e-2).
 #[test]
 fn the_film_constant_correction_removes_the_first_order_error() {
     let (kappa, shape) = (0.631, crate::physics::hertz::shape_factor(0.631));
     let ff = FarField::new(shape, kappa, 1.0, Viscosity::barus(0.0));
-    let h0 = 1.0;
+    let delta = 1.0;
     let residual = |r: f64, with: f64| {
         let at = (-r * 0.8, r * 0.6 * kappa);
-        relative_residual(&ff, shape, 1.0, at, 1e-3 * r, h0, with * h0).abs()
+        relative_residual(&ff, shape, 1.0, at, 1e-3 * r, delta, with * delta).abs()
     };
     let plain = residual(6.0, 0.0) / residual(12.0, 0.0);
     let corrected = residual(6.0, 1.0) / residual(12.0, 1.0);
@@ -132,11 +132,11 @@ fn fitting_recovers_the_amplitude_of_an_asymptotic_field() {
         },
         4,
     );
-    let h0 = 0.5;
-    let p = grid.sample(|x, y| ff.pressure_of_reduced(1.3 * ff.reduced_pressure(x, y, h0)));
-    let change = ff.fit(&grid, &p, h0);
+    let delta = 0.5;
+    let p = grid.sample(|x, y| ff.pressure_of_reduced(1.3 * ff.reduced_pressure(x, y, delta)));
+    let change = ff.fit(&grid, &p, delta);
     assert!((change - 0.3).abs() < 1e-9, "{change}");
-    assert!(ff.fit(&grid, &p, h0) < 1e-9);
+    assert!(ff.fit(&grid, &p, delta) < 1e-9);
 }
 
 /// Refitting lands on the fixed point of an affine edge-to-fit map in two fits: a
@@ -155,17 +155,17 @@ fn refitting_takes_the_secant_step_to_the_fixed_point() {
         },
         4,
     );
-    let h0 = 0.5;
+    let delta = 0.5;
     let solution = |ff: &FarField| {
         let a = ff.amplitude;
         let response = (0.5 + 0.7 * a) / a;
-        grid.sample(|x, y| ff.pressure_of_reduced(response * ff.reduced_pressure(x, y, h0)))
+        grid.sample(|x, y| ff.pressure_of_reduced(response * ff.reduced_pressure(x, y, delta)))
     };
-    ff.fit(&grid, &solution(&ff), h0);
+    ff.fit(&grid, &solution(&ff), delta);
     assert!((ff.amplitude - 1.2).abs() < 1e-9, "{}", ff.amplitude);
-    ff.fit(&grid, &solution(&ff), h0);
+    ff.fit(&grid, &solution(&ff), delta);
     assert!((ff.amplitude - 5.0 / 3.0).abs() < 1e-9, "{}", ff.amplitude);
-    assert!(ff.fit(&grid, &solution(&ff), h0) < 1e-9);
+    assert!(ff.fit(&grid, &solution(&ff), delta) < 1e-9);
 }
 
 /// The piezoviscous transform inverts: Barus in closed form, Roelands by Newton.

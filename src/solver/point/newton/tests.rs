@@ -7,7 +7,7 @@ use crate::solver::grid::{Domain, Grid};
 
 /// A moderately loaded Eyring contact on a level-4 grid, at the Hertzian pressure and a
 /// `Delta` that keeps the film positive.
-fn setup() -> (Level, Model, f64) {
+fn setup() -> (LevelFields, Model, f64) {
     let case = Case {
         spec: CaseForm::Dimensionless(DimensionlessCase {
             m: 100.0,
@@ -23,28 +23,28 @@ fn setup() -> (Level, Model, f64) {
     let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
     let model = Model::new(&problem);
     let grid = Grid::level(&Domain::default(), 4);
-    let mut level = Level::new(grid, &model);
+    let mut level = LevelFields::new(grid, &model);
     level.p = grid.sample(Hertz::pressure);
-    let h0 = 0.3;
-    level.update_film(h0);
+    let delta = 0.3;
+    level.update_film(delta);
     assert!(
         level.h.iter().all(|&h| h > 0.0),
         "the test needs a positive film"
     );
-    (level, model, h0)
+    (level, model, delta)
 }
 
-/// `r / c` at the given nodes and the relative load error, for pressure `p` and `h0`.
+/// `r / c` at the given nodes and the relative load error, for pressure `p` and `delta`.
 fn reynolds(
-    level: &mut Level,
+    level: &mut LevelFields,
     model: &Model,
     p: &[f64],
-    h0: f64,
+    delta: f64,
     scale: &[f64],
     at: &[usize],
 ) -> Vec<f64> {
     level.p.copy_from_slice(p);
-    let ev = evaluate(level, model, h0, scale);
+    let ev = evaluate(level, model, delta, scale);
     let g = level.grid;
     let mut out: Vec<f64> = at
         .iter()
@@ -55,7 +55,7 @@ fn reynolds(
 }
 
 /// The Jacobian at the test state for its pressurised nodes.
-fn linearise(level: &mut Level, model: &Model) -> Jacobian {
+fn linearise(level: &mut LevelFields, model: &Model) -> Jacobian {
     let g = level.grid;
     level.update_coefficients(model);
     let scale = row_scales(level);
@@ -87,7 +87,7 @@ fn max_diff(a: &[f64], b: &[f64]) -> f64 {
 
 #[test]
 fn jacobian_vector_product_matches_central_differences_of_the_residual() {
-    let (mut level, model, h0) = setup();
+    let (mut level, model, delta) = setup();
     let mut jac = linearise(&mut level, &model);
     let scale = row_scales(&level);
     let n = jac.len();
@@ -106,7 +106,7 @@ fn jacobian_vector_product_matches_central_differences_of_the_residual() {
         for (r, &k) in jac.active.iter().enumerate() {
             p[k] += sign * eps * v[r];
         }
-        (p, h0 + sign * eps * v[n - 1])
+        (p, delta + sign * eps * v[n - 1])
     };
     let (pp, hp) = moved(1.0);
     let (pm, hm) = moved(-1.0);
@@ -136,13 +136,13 @@ fn jacobian_vector_product_matches_central_differences_of_the_residual() {
 
 /// Solves `J x = b` by the preconditioned GMRES of the Newton step.
 fn krylov(
-    level: &mut Level,
+    level: &mut LevelFields,
     jac: &mut Jacobian,
     radius: usize,
     local_rows: bool,
     b: &[f64],
     tolerance: f64,
-) -> (Vec<f64>, gmres::Outcome) {
+) -> (Vec<f64>, gmres::Convergence) {
     let mut pc = jac
         .preconditioner(level, radius, local_rows, LuStorage::default())
         .expect("regular");
@@ -165,7 +165,7 @@ fn krylov(
 fn a_step_does_not_depend_on_the_coefficients_left_on_the_level() {
     // A level fresh from interpolation holds no current coefficients (here: none at
     // all); one whose coefficients are those of its state must take the same step.
-    let (mut stale, model, h0) = setup();
+    let (mut stale, model, delta) = setup();
     let (mut current, _, _) = setup();
     current.update_coefficients(&model);
     let newton = NewtonParams {
@@ -182,7 +182,7 @@ fn a_step_does_not_depend_on_the_coefficients_left_on_the_level() {
         load_tolerance: 0.0,
         ..StoppingParams::default()
     };
-    let (mut a, mut b) = (h0, h0);
+    let (mut a, mut b) = (delta, delta);
     iterate(
         &mut stale,
         &model,

@@ -1,5 +1,5 @@
-//! What every artefact of the paper is ([`Artefact`]) and what building one reports
-//! ([`TargetReport`]). The artefacts (one module each) build on this file, the registry
+//! What every target of the paper is ([`Target`]) and what building one reports
+//! ([`TargetReport`]). The targets (one module each) build on this file, the registry
 //! (`paper/mod.rs`) lists them, the report reads what they report.
 
 use crate::paper::mastercurve::fit::{fit, Fit, FIT_TAU_C_MIN};
@@ -18,18 +18,18 @@ pub const LINE_LEVEL: u32 = 8;
 
 /// A sweep file shipped in `cases/`, compiled in: `cases/<name>.toml`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct SweepFile {
+pub struct ShippedSweep {
     /// Its name, the stem of its file.
     pub name: &'static str,
     /// Its text.
     pub text: &'static str,
 }
 
-/// The [`SweepFile`] `cases/<name>.toml`, its text compiled in (the name written once, so
+/// The [`ShippedSweep`] `cases/<name>.toml`, its text compiled in (the name written once, so
 /// that the name and the file cannot disagree).
 macro_rules! sweep_file {
     ($name:literal) => {
-        $crate::paper::artefact::SweepFile {
+        $crate::paper::target::ShippedSweep {
             name: $name,
             text: include_str!(concat!(
                 env!("CARGO_MANIFEST_DIR"),
@@ -42,7 +42,7 @@ macro_rules! sweep_file {
 }
 pub(crate) use sweep_file;
 
-impl SweepFile {
+impl ShippedSweep {
     /// Its path in the crate, as errors name it.
     pub fn path(&self) -> String {
         format!("cases/{}.toml", self.name)
@@ -56,7 +56,7 @@ impl SweepFile {
 
 /// A table or figure of the paper (or beyond it) as a named target: what `repro list` shows,
 /// what `repro <name>`, `repro all`, `repro check`, `--shard` and `--offline` run.
-pub trait Artefact: Sync {
+pub trait Target: Sync {
     /// Name on the command line, and stem of its files.
     fn name(&self) -> &'static str;
 
@@ -74,7 +74,7 @@ pub trait Artefact: Sync {
 
     /// The sweep file of `cases/` it draws, if it draws one (the sweep figures): what
     /// [`crate::paper::cases::shipped`] lists.
-    fn sweep_file(&self) -> Option<SweepFile> {
+    fn sweep_file(&self) -> Option<ShippedSweep> {
         None
     }
 
