@@ -333,13 +333,13 @@ impl SolveError {
 fn level_advice(needed: Option<u32>, finest: u32) -> String {
     match needed {
         Some(n) if n <= finest => {
-            format!("the grid cannot resolve this film; level {n} is estimated to (--level {n})")
+            format!("the grid cannot resolve this film; level {n} is estimated to resolve it (--level {n})")
         }
         Some(n) => format!(
-            "the grid cannot resolve this film; level {n} is estimated to, beyond the \
-             solver's finest level {finest}"
+            "the grid cannot resolve this film; level {n} is estimated to resolve it, beyond \
+             the solver's finest level {finest}"
         ),
-        None => "the grid cannot resolve this film; a finer level may".to_string(),
+        None => "the grid cannot resolve this film; a finer level may resolve it".to_string(),
     }
 }
 
