@@ -8,6 +8,7 @@ mod lss;
 mod lubricant;
 mod mastercurve;
 mod one_rule;
+mod point_accuracy;
 mod point_contact;
 mod predict;
 mod shards;

@@ -10,10 +10,8 @@
 //! `H = h Rx / a^2` (the 1-D analogue of the paper's `H = h/c`), so that the film equation is
 //! `H = Delta + X^2/2 - (1/pi) int P(X') ln|X - X'| dX'` and the force balance `int P dX = pi/2`.
 
-use super::case::{
-    eyring_n_s, field, hertzian_pressure, physical_scales, positive, shear_law, slip_in_range,
-    CaseError, LubricantSpec, MoesInputs, PhysicalCase, Physics,
-};
+use super::case::{eyring_n_s, physical_scales, shear_law, LubricantSpec, PhysicalCase, Physics};
+use super::checks::{field, hertzian_pressure, positive, slip_in_range, CaseError, MoesInputs};
 use super::density::Density;
 use super::lubricant::LubricantTable;
 use super::rheology::{Rheology, ShearLaw};

@@ -2,6 +2,7 @@
 //! and the case that composes them into a dimensionless problem.
 
 pub mod case;
+pub mod checks;
 pub mod datasheet;
 pub mod density;
 pub mod evaluations;

@@ -14,9 +14,8 @@
 //! The Hertz scales, Moes groups and viscosity laws are those of [`super::case`],
 //! [`super::line_contact`] and [`super::viscosity`]: nothing is recomputed here.
 
-use super::case::{
-    field, positive, CaseError, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem,
-};
+use super::case::{CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
+use super::checks::{field, positive, CaseError};
 use super::density::DensityLaw;
 use super::film::hc_eq10;
 use super::hertz::Hertz;

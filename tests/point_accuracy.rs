@@ -1,0 +1,400 @@
+//! The point-contact solver's accuracy machinery against its oracles: the refinement of a
+//! closed film and of a missed accuracy target, the stopping rule's bound on the algebraic
+//! error, the error estimate against level 9, the fitted far field against the a-priori one,
+//! and the chain of nested domains.
+
+use crate::point_contact::{assert_sound, dimensionless, physical, problem, rel};
+use crate::support::appendix_problem;
+use repro::paper::table4::Table4Case;
+use repro::physics::case::Case;
+use repro::physics::rheology::Rheology;
+use repro::solver::output::{LadderStop, Output, SolveError};
+use repro::solver::point::{solve, AccuracyTarget, Params, PointSolution};
+
+#[test]
+fn a_closed_film_is_refined_to_the_next_level() {
+    // Mineral oil A at 60 C, 3 GPa, 2 m/s (M = 11 070, a Fig. 4 case): at level 7 the
+    // converged film closes at the side lobes (min H = -4e-4); the solver adds level 8,
+    // where it is open, and says so.
+    let c = physical("mineral-oil-a", 60.0, 3e9, 2.0, 0.001, 4e6, 1.0);
+    let p = problem(&c);
+    let s = solve(&p, &Params::at_level(7), None).unwrap();
+    assert_eq!(s.info.level, 8);
+    assert_eq!(s.grid.nx, 512);
+    assert_sound(&s, "M 11 070 refined");
+    // Level 8 is cycled first (19 cycles from the interpolated level 7), and its residual
+    // then stands at 3-4e-5 in a period-2 oscillation while the film still creeps: since
+    // revision point-10 (stopping::residual_falls) two Newton-Krylov steps finish it (13 s
+    // in all, against 6.6 s for the cycles' stop 2e-4 off in Hc). Revision point-4's
+    // Newton-Krylov refinement (7 steps from level 7 to a residual of 1.4e-8) gave
+    // Hc 2.754665e-3, Hmin 2.377924e-4 (h/c) and mu-bar 30.940073: two solutions of the same
+    // discrete equations to a residual below 1e-6 agree within 1e-4 (measured: 1e-5).
+    assert!(s.info.newton_steps > 0 && s.info.residual() < 1e-6);
+    for (got, newton, what) in [
+        (s.film.h_central, 2.754665e-3, "Hc"),
+        (s.film.h_min, 2.377924e-4, "Hmin"),
+        (s.friction.sliding, 30.940073, "mu-bar"),
+    ] {
+        assert!(rel(got, newton) < 1e-4, "{what}: {got} vs {newton}");
+    }
+    let closed = solve(
+        &p,
+        &{
+            let mut params = Params::at_level(7);
+            params.accuracy.refinement_levels = 0;
+            params
+        },
+        None,
+    );
+    // Without the refinement the error says which level would resolve the film: level 8,
+    // which does (the estimate from the film's second-order grid error could say 9, one
+    // level of margin; anything else is a wrong estimate).
+    assert!(
+        matches!(
+            closed,
+            Err(SolveError::FilmCollapse {
+                level: 7,
+                level_needed: Some(8 | 9),
+                ..
+            })
+        ),
+        "{closed:?}"
+    );
+}
+
+#[test]
+fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level() {
+    // Fig. 4 case 214 (mineral oil A, 100 C, 2 GPa, 12 m/s, S 2 %; M 1 484, L 7.4). At level
+    // 7 its level 5 is outside the asymptotic range (the minimum film closed, mu-bar 12.3
+    // against 17.0 at level 6 and 16.75 at level 7): the friction's levels oscillate and its
+    // estimate is the first-order bound, 42 %. A target of 1 % in friction takes it,
+    // converged by cycles, to level 8, whose levels 6-8 converge at order 2.2 in friction
+    // (0.13 %).
+    let c = physical("mineral-oil-a", 100.0, 2e9, 12.0, 0.02, 4e6, 1.0);
+    let p = problem(&c);
+    let rule = Params::for_problem(&p, 7);
+    assert_eq!(
+        rule.accuracy.target,
+        Some(AccuracyTarget::FRICTION),
+        "the rule's target"
+    );
+    let s = solve(&p, &rule, None).unwrap();
+    assert_eq!(s.info.level, 8);
+    assert_sound(&s, "M 1 484 refined");
+    let e = s.errors.as_ref().unwrap();
+    assert_eq!(e.levels.len(), 3);
+    let mu = e.estimate(Output::MuBarSliding).unwrap();
+    assert!(
+        mu.trusted() && mu.relative(s.friction.sliding) < 0.01,
+        "{mu:?}"
+    );
+    // The same discrete solution as level 8 solved directly: two solves of the same
+    // equations stopped by the output rule agree within its tolerance (5e-4; measured
+    // 1.3e-5 in Hc, 1e-6 in mu-bar).
+    let direct = {
+        let mut params = Params::for_problem(&p, 8);
+        params.accuracy.target = None;
+        params
+    };
+    let d = solve(&p, &direct, None).unwrap();
+    for (got, want, what) in [
+        (s.film.h_central, d.film.h_central, "Hc"),
+        (s.friction.sliding, d.friction.sliding, "mu-bar"),
+    ] {
+        assert!(rel(got, want) < 5e-4, "{what}: {got} vs {want}");
+    }
+    // Without the target the solve stays on level 7 with its bound.
+    let plain = solve(
+        &p,
+        &{
+            let mut params = rule;
+            params.accuracy.target = None;
+            params
+        },
+        None,
+    )
+    .unwrap();
+    assert_eq!(plain.info.level, 7);
+    let bound = plain
+        .errors
+        .unwrap()
+        .estimate(Output::MuBarSliding)
+        .unwrap();
+    assert!(bound.relative(plain.friction.sliding) > 0.01, "{bound:?}");
+}
+
+#[test]
+fn the_output_rule_stops_within_its_bound_of_the_converged_solution() {
+    // The default cycles stop where the estimated algebraic error of film and friction is
+    // below 5e-4 (solver::point::stopping); the same case iterated to a residual of 1e-6 is
+    // the converged solution. The true error must stay within twice the bound: the tail
+    // estimate assumes a constant convergence factor, which varies by about 10 % between
+    // cycles (0.60-0.68 on this case).
+    for level in [6, 7] {
+        let p = appendix_problem();
+        let fast = solve(&p, &Params::at_level(level), None).unwrap();
+        let tight = solve(
+            &p,
+            &{
+                let mut params = Params::at_level(level);
+                params.stopping.output_tolerance = 0.0;
+                params
+            },
+            None,
+        )
+        .unwrap();
+        assert!(
+            fast.info.cycles < tight.info.cycles,
+            "the rule saves cycles"
+        );
+        for (what, a, b) in [
+            ("Hc", fast.film.h_central, tight.film.h_central),
+            ("Hmin", fast.film.h_min, tight.film.h_min),
+            ("mu-bar", fast.friction.sliding, tight.friction.sliding),
+        ] {
+            assert!(rel(a, b) < 1e-3, "level {level} {what}: {a} vs {b}");
+        }
+    }
+}
+
+#[test]
+fn the_cycles_do_not_stop_on_a_fixed_point_that_is_not_a_solution() {
+    // Fig. 5's traction fluid at 40 C, 3 GPa, 12 m/s, S 2 % (4 MPa) at level 6: the cycles'
+    // outputs settle while the residual stands at 7.7e-4, a fixed point of the cavitation
+    // projection (solver::point::stopping::residual_falls). Stopped there (revision point-9)
+    // the rolling friction was 6 % and Hc 2e-3 off the solution. The solver must hand that
+    // state to Newton-Krylov and end at a solution of the discrete equations: a residual
+    // below the tolerance, and the outputs of a Newton-Krylov solve started from the level-5
+    // grid sequence (one cycle allowed) within 1e-4, two solutions of the same equations to a
+    // residual of 1e-6 (the rolling friction, a thousandth of the sliding, within 1e-3).
+    let p = problem(&physical("traction-fluid", 40.0, 3e9, 12.0, 0.02, 4e6, 1.0));
+    let params = Params::at_level(6);
+    let s = solve(&p, &params, None).unwrap();
+    assert!(
+        s.info.residual() < params.stopping.tolerance,
+        "residual {} at the end ({:?})",
+        s.info.residual(),
+        s.info.method
+    );
+    let newton = solve(
+        &p,
+        &{
+            let mut params = params.clone();
+            params.multigrid.max_cycles = 1;
+            params
+        },
+        None,
+    )
+    .unwrap();
+    let rolling = |s: &PointSolution| s.friction.rolling.expect("rolling friction computed");
+    for (what, a, b, bound) in [
+        ("Hc", s.film.h_central, newton.film.h_central, 1e-4),
+        ("Hmin", s.film.h_min, newton.film.h_min, 1e-4),
+        ("mu-bar", s.friction.sliding, newton.friction.sliding, 1e-4),
+        ("rolling mu-bar", rolling(&s), rolling(&newton), 1e-3),
+    ] {
+        assert!(rel(a, b) < bound, "{what}: {a} vs {b}");
+    }
+}
+
+/// The loaded-film friction region (`H <= 4 Hc`, over the applied load) against the whole
+/// domain on a heavy case whose inlet carries no friction to speak of: the Figs. 1-3 corner
+/// M 1000, L 15, S-bar 0.1 at level 5. The Table 4 case at level 7 moves 4e-6 between them
+/// (docs/DOMAIN_NOTES.md); 1e-4 leaves room for level 5's coarser cavitation boundary (the
+/// load balance itself is held to 1e-4). On the paper's `P = 0` edge, so that the domain
+/// carries the whole load and only the region differs (with the far field the domain's
+/// share of the load is 5e-4 less than the applied load the loaded film divides by).
+#[test]
+fn the_loaded_film_region_leaves_a_heavy_contact_unchanged() {
+    use repro::solver::point::{Edge, FrictionRegion};
+    let p = problem(&dimensionless(1000.0, 15.0, 0.1, Rheology::Eyring));
+    let at = |region| {
+        let params = {
+            let mut params = Params::for_problem(&p, 5);
+            params.friction.region = region;
+            params.edge = Edge::Zero;
+            params
+        };
+        solve(&p, &params, None).expect("converges")
+    };
+    let (domain, film) = (at(FrictionRegion::Domain), at(FrictionRegion::LoadedFilm));
+    // The same solve: only the friction's integral differs.
+    assert_eq!(domain.film.h_central, film.film.h_central);
+    let rel = (film.friction.sliding / domain.friction.sliding - 1.0).abs();
+    assert!(
+        rel < 1e-4,
+        "sliding {} vs {}",
+        film.friction.sliding,
+        domain.friction.sliding
+    );
+}
+
+/// The discretisation error a level-7 solve reports (from its own level and the two below,
+/// src/solver/richardson.rs) against the same case solved at level 9: for the central film,
+/// the minimum film and the sliding friction, the estimate must be at least the distance to
+/// level 9. Level 9 is itself not converged, so the distance understates the true error by
+/// the level-9 error (a quarter to a half of the level-7 one at orders 2 to 1): bracketing it
+/// is what an error bar must do at the least. A case on a chain of nested domains
+/// (`Params::nested`) is held against its chain at level 8, whose contact mesh (2.6 / 512)
+/// is four times finer than a uniform level 9's on its domain. Returns the level-7 solve.
+fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
+    let p = problem(case);
+    let s = solve(&p, &Params::for_problem(&p, 7), None).unwrap_or_else(|e| panic!("{what}: {e}"));
+    let fine_level = if Params::for_problem(&p, 7).nested {
+        8
+    } else {
+        9
+    };
+    let fine_params = {
+        let mut params = Params::for_problem(&p, fine_level);
+        params.accuracy.error_levels = 0;
+        params
+    };
+    let fine = solve(&p, &fine_params, None).unwrap_or_else(|e| panic!("{what} L9: {e}"));
+    let e = s
+        .errors
+        .as_ref()
+        .expect("a case is solved with its error estimate");
+    assert!(
+        e.levels.len() >= 2,
+        "{what}: at least two levels, {:?}",
+        e.levels
+    );
+    let outputs = [
+        (
+            "Hc",
+            Output::HCentral,
+            s.film.h_central,
+            fine.film.h_central,
+        ),
+        ("Hmin", Output::HMin, s.film.h_min, fine.film.h_min),
+        (
+            "mu-bar",
+            Output::MuBarSliding,
+            s.friction.sliding,
+            fine.friction.sliding,
+        ),
+    ];
+    for (name, output, value, level_9) in outputs {
+        let estimate = e
+            .estimate(output)
+            .unwrap_or_else(|| panic!("{what}: no estimate of {name}"));
+        // The outputs are converged to the stopping rule's output tolerance (5e-4 relative,
+        // `StoppingParams::output_tolerance`), so a difference below it is algebraic, not a grid
+        // error: case 23's chain puts its central film 5.3e-4 from its level 8 with an
+        // estimate of 2.3e-4 (order 2.5 over levels 5-7).
+        let algebraic = Params::default().stopping.output_tolerance * value.abs();
+        let distance = (value - level_9).abs();
+        assert!(
+            estimate.error + algebraic >= distance,
+            "{what} {name}: level {} {value} +- {} (order {:?}), level 9 {level_9}",
+            s.info.level,
+            estimate.error,
+            estimate.order
+        );
+    }
+    s
+}
+
+#[test]
+fn the_error_estimate_brackets_level_9_on_a_light_contact() {
+    // Fig. 6 case 23 (5P4E, 40 C, 1 GPa, 12 m/s; M 4.76, L 57) on its wide domain with the
+    // far field and two nested rectangles: friction within half a per cent at level 7.
+    let c = physical("5p4e", 40.0, 1e9, 12.0, 0.005, 6e6, 1.0);
+    let s = assert_estimate_brackets_level_9(&c, "Fig. 6 case 23");
+    assert!(s.surroundings.is_some(), "solved on nested domains");
+    // Three levels, and an order observed for each output (2.50, 1.50, 1.47).
+    let e = s.errors.unwrap();
+    assert_eq!(e.levels.len(), 3);
+    let trusted = |o| e.estimate(o).unwrap().trusted();
+    assert!(trusted(Output::MuBarSliding) && trusted(Output::HCentral));
+}
+
+#[test]
+fn the_error_estimate_brackets_level_9_on_the_table_4_case() {
+    // The Appendix case (M 1 739, L 14.8): the middle of the envelope.
+    let c = Table4Case::shipped().unwrap().case;
+    let s = assert_estimate_brackets_level_9(&c, "Table 4");
+    assert_eq!(s.errors.unwrap().levels.len(), 3);
+}
+
+#[test]
+fn the_error_estimate_brackets_level_9_on_a_heavy_contact() {
+    // Fig. 4 case 140 (mineral oil A, 60 C, 3 GPa, 2 m/s; M 11 070): its film closes at
+    // level 7, so it is solved at level 8; its level 6 closes at the centre, so the estimate
+    // reads levels 7-8 alone and is the first-order bound.
+    let c = physical("mineral-oil-a", 60.0, 3e9, 2.0, 0.005, 6e6, 1.0);
+    let s = assert_estimate_brackets_level_9(&c, "M 11 070");
+    assert_eq!(s.info.level, 8);
+    let e = s.errors.unwrap();
+    assert_eq!(e.stopped, Some(LadderStop::FilmClosed { level: 6 }));
+    assert!(!e.estimate(Output::MuBarSliding).unwrap().trusted());
+}
+
+/// The far field with its amplitude refitted to the solution (`Edge::FittedFarField`, the
+/// studies' option, reached by no command) against the rule's a-priori amplitude on the light
+/// contact M 5, L 10, S-bar 0.1, Eyring, whose domain the light inlet sizes. The amplitude
+/// moves the outputs through the load outside the domain (at most 8 % of the load by the
+/// domain rule): at level 6 the two differ by 1.5e-4 in `Hc` and 2.2e-3 in friction (at level
+/// 7, docs/DOMAIN_NOTES.md, 5e-5 and 9e-4), a small part of level 6's own friction error (16 %
+/// estimated). The bounds, 1e-3 and 5e-3, leave twice the measured difference and stay far
+/// below that error: a refit loop that drifted or stopped on a stale edge would exceed them.
+#[test]
+fn the_fitted_far_field_agrees_with_the_a_priori_one_on_a_light_contact() {
+    use repro::solver::point::Edge;
+    let p = problem(&dimensionless(5.0, 10.0, 0.1, Rheology::Eyring));
+    let at = |edge| {
+        let params = Params {
+            edge,
+            ..Params::for_problem(&p, 6)
+        };
+        solve(&p, &params, None).expect("converges")
+    };
+    let (a_priori, fitted) = (at(Edge::FarField), at(Edge::FittedFarField));
+    let rel = |a: f64, b: f64| (a / b - 1.0).abs();
+    let hc = rel(fitted.film.h_central, a_priori.film.h_central);
+    let mu = rel(fitted.friction.sliding, a_priori.friction.sliding);
+    // The refits ran: the fitted amplitude is not the a-priori one bit for bit.
+    assert!(hc > 0.0, "the fit left the edge as it was");
+    assert!(
+        hc < 1e-3 && mu < 5e-3,
+        "fitted against a priori: Hc {} / {} ({hc:e}), mu-bar {} / {} ({mu:e})",
+        fitted.film.h_central,
+        a_priori.film.h_central,
+        fitted.friction.sliding,
+        a_priori.friction.sliding
+    );
+}
+
+/// The chain of nested domains (issue 39 prototype, `solver::point::chain`) on M 5, L 10
+/// (S-bar 0.1, Barus, Eyring; case-sized domain `-12.5..7 x 12.5`, two rectangles) at level 6.
+/// Reference: the grid-converged values of docs/ACCURACY_NOTES.md ("Resolution where the
+/// contact needs it"): sliding `mu-bar` 0.22749, Moes `Hc` 3.6863, extrapolated from two
+/// rectangles at levels 6-8 and agreeing with the uniform levels' extrapolation (0.2274).
+#[test]
+fn a_chain_of_nested_domains_brings_a_light_contact_within_the_targets() {
+    use repro::solver::point::chain::solve_chain_estimated;
+    let problem = problem(&dimensionless(5.0, 10.0, 0.1, Rheology::Eyring));
+    let params = Params::for_problem(&problem, 6);
+    let (chain, errors) = solve_chain_estimated(&problem, &params, 2).unwrap();
+    let (hc, mu) = (
+        errors.estimate(Output::HCentral),
+        errors.estimate(Output::MuBarSliding),
+    );
+    assert_eq!(chain.solutions.len(), 3, "the domain and two rectangles");
+    let [hc_value, _, mu_value] = chain.outputs(&problem);
+    // Issue 39's targets: friction within 1 % (measured 0.57 %; the uniform level 6 is
+    // 8.9 % off), film within 2 % (measured 0.01 %).
+    let (mu_error, hc_error) = ((mu_value - 0.22749).abs(), (hc_value - 3.6863).abs());
+    assert!(mu_error < 0.01 * 0.22749, "mu-bar {mu_value}");
+    assert!(hc_error < 0.02 * 3.6863, "Hc {hc_value}");
+    // The estimate over the chains at levels 4-6 brackets the friction's error (0.76 %
+    // estimated against 0.57 %).
+    let mu = mu.expect("three levels give an estimate");
+    assert!(
+        mu.error >= mu_error,
+        "estimate {} against {mu_error}",
+        mu.error
+    );
+    assert!(hc.is_some());
+}
