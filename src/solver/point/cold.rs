@@ -86,6 +86,7 @@ pub(super) fn converge(
     let windows = StallWindows {
         stall: params.multigrid.stall_cycles,
         early: params.multigrid.early_stall_cycles,
+        weigh_alternation: false,
     };
     let finest = converge_by_cycles(&mut mg, top, params, windows, &Known::default(), observe);
     let mut tally = Tally {

@@ -65,13 +65,15 @@ pub(super) struct How<'a> {
 
 impl<'a> How<'a> {
     /// Cycles with the ordinary stall window and no early rule (a start that is already
-    /// converged, or nearly, need not halve its residual early), stopped also by `known`.
+    /// converged, or nearly, need not halve its residual early), stopped also by `known`;
+    /// where they alternate, with a weighted correction (`StallWindows::weigh_alternation`).
     pub(super) fn from_converged(params: &Params, known: &'a Known) -> Self {
         How {
             cycles: true,
             windows: StallWindows {
                 stall: params.multigrid.stall_cycles,
                 early: 0,
+                weigh_alternation: true,
             },
             known,
         }
@@ -137,6 +139,7 @@ fn polish_and_finish(
     let windows = StallWindows {
         stall: params.multigrid.sequence_stall_cycles,
         early: params.multigrid.early_stall_cycles,
+        weigh_alternation: false,
     };
     let run = converge_by_cycles(mg, k, params, windows, &Known::default(), observe);
     tally.history.extend(&run.history);

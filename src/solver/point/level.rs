@@ -46,6 +46,10 @@ pub(crate) struct LevelFields {
     refreshed_delta: Option<u64>,
     /// The pressure of the last [`LevelFields::refresh`].
     refreshed_p: Vec<f64>,
+    /// The weight the coarse-grid correction into this level is added with: 1, or
+    /// [`super::cycles::DAMPED_CORRECTION`] once its cycles as the top alternated
+    /// ([`super::cycles`]).
+    pub correction_weight: f64,
 }
 
 impl LevelFields {
@@ -70,6 +74,7 @@ impl LevelFields {
             rh: vec![0.0; n],
             refreshed_delta: None,
             refreshed_p: Vec::new(),
+            correction_weight: 1.0,
             grid,
         }
     }

@@ -44,6 +44,7 @@ pub(super) fn grid_sequence(
             windows: StallWindows {
                 stall: params.multigrid.sequence_stall_cycles,
                 early: params.multigrid.early_stall_cycles,
+                weigh_alternation: false,
             },
             known: &known,
         };

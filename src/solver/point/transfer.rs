@@ -81,9 +81,11 @@ pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Mode
     coarse.rg = fine.rg + gf.integrate(&fine.p) - gc.integrate(&coarse.p);
 }
 
-/// Adds the bilinearly interpolated coarse-grid correction `P_c - P_c,old` to the fine
-/// pressure where it is positive, then projects on `P >= 0`.
+/// Adds the bilinearly interpolated coarse-grid correction `P_c - P_c,old`, times the fine
+/// level's [`LevelFields::correction_weight`], to the fine pressure where it is positive, then
+/// projects on `P >= 0`.
 pub(crate) fn correct(coarse: &LevelFields, fine: &mut LevelFields) {
+    let weight = fine.correction_weight;
     let (gf, gc) = (fine.grid, coarse.grid);
     let e = |ic: usize, jc: usize| {
         let k = gc.idx(ic, jc);
@@ -102,7 +104,7 @@ pub(crate) fn correct(coarse: &LevelFields, fine: &mut LevelFields) {
                 (0, 1) => 0.5 * (e(ic, jc) + e(ic, jc + 1)),
                 _ => 0.25 * (e(ic, jc) + e(ic + 1, jc) + e(ic, jc + 1) + e(ic + 1, jc + 1)),
             };
-            fine.p[k] = (fine.p[k] + corr).max(0.0);
+            fine.p[k] = (fine.p[k] + weight * corr).max(0.0);
         }
     }
 }
