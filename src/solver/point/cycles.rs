@@ -270,13 +270,6 @@ const ALTERNATING_COSINE: f64 = -0.9;
 /// their fourth or fifth cycle at level 8 on.
 const ALTERNATING_CYCLES: usize = 3;
 
-/// Factor by which the pressure change (its Euclidean norm) must have fallen over the last
-/// two cycles for alternating cycles to be left alone, the same as the residual's
-/// ([`stopping::residual_falls`]); the residual falling so leaves them alone too. Cycles
-/// whose changes alternate while either still falls converge, and their results are not
-/// touched; the three families' changes and residuals stood still or grew.
-const ALTERNATING_FALL: f64 = 0.8;
-
 /// Watches a level's cycles for a period-two oscillation ([`DAMPED_CORRECTION`]).
 #[derive(Default)]
 struct Alternation {
@@ -290,23 +283,30 @@ struct Alternation {
 
 impl Alternation {
     /// Records the cycle that took the pressure from `before` to `p`; whether the cycles
-    /// now alternate without the pressure change falling (the caller also reads the
-    /// residual's fall).
+    /// now alternate without the pressure change (its Euclidean norm) falling by the
+    /// residual's factor over two cycles ([`stopping::residual_falls`]; the caller also reads
+    /// the residual's fall). Cycles whose changes alternate while either still falls
+    /// converge, and their results are not touched; the three families' changes and
+    /// residuals stood still or grew.
     fn push(&mut self, p: &[f64], before: &[f64]) -> bool {
-        let change: Vec<f64> = p.iter().zip(before).map(|(a, b)| a - b).collect();
-        let norm = change.iter().map(|d| d * d).sum::<f64>().sqrt();
-        let dot: f64 = change.iter().zip(&self.last).map(|(a, b)| a * b).sum();
+        let first = self.last.is_empty();
+        if first {
+            self.last.resize(p.len(), 0.0);
+        }
+        // The change and its products with the last one in one pass, kept in place of it.
+        let (mut dot, mut squares) = (0.0, 0.0);
+        for ((last, a), b) in self.last.iter_mut().zip(p).zip(before) {
+            let change = a - b;
+            dot += change * *last;
+            squares += change * change;
+            *last = change;
+        }
+        let norm: f64 = squares.sqrt();
         let last_norm = self.norms.last().copied().unwrap_or(0.0);
-        let alternates =
-            !self.last.is_empty() && dot < ALTERNATING_COSINE * norm * last_norm && norm > 0.0;
+        let alternates = !first && dot < ALTERNATING_COSINE * norm * last_norm && norm > 0.0;
         self.run = if alternates { self.run + 1 } else { 0 };
         self.norms.push(norm);
-        self.last = change;
-        let falls = match self.norms.as_slice() {
-            [.., before, _, now] => *now <= ALTERNATING_FALL * *before,
-            _ => true,
-        };
-        self.run >= ALTERNATING_CYCLES && !falls
+        self.run >= ALTERNATING_CYCLES && !stopping::residual_falls(&self.norms)
     }
 }
 
