@@ -14,6 +14,7 @@
 
 pub mod chain;
 mod cold;
+pub mod composite;
 mod converge;
 mod cycles;
 mod edge;

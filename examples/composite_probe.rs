@@ -1,0 +1,94 @@
+//! Prototype of issue 39: a composite grid (the whole domain at `LEVEL`, one patch at twice
+//! its resolution, coupled both ways; `solver::point::composite`) against the uniform levels.
+//!
+//! `cargo run --release --example composite_probe -- CASE LEVEL X_START PATCH_LEVEL ROUNDS [MARGIN [BAND]]`
+//!
+//! `CASE` as `nested_probe`. The domain is the rule's with the `P = 0` edge; the patch's inlet
+//! is the grid line nearest `X_START`, and it spans `2^PATCH_LEVEL` cells of the level in each
+//! direction, symmetric about `Y = 0`. Prints the uniform solutions at `LEVEL` and `LEVEL + 1`
+//! and the composite's outputs after each round.
+mod common;
+
+use repro::physics::case::Problem;
+use repro::physics::lubricant::LubricantTable;
+use repro::solver::point::composite::{solve_composite, PatchSpec};
+use repro::solver::point::{self, Edge, Params};
+use std::time::Instant;
+
+fn main() {
+    let a: Vec<String> = std::env::args().collect();
+    let problem = Problem::from_case(&common::case_of(&a[1]), &LubricantTable::table1()).unwrap();
+    let level: u32 = a[2].parse().unwrap();
+    let x_start: f64 = a[3].parse().unwrap();
+    let patch_level: u32 = a[4].parse().unwrap();
+    let rounds: usize = a[5].parse().unwrap();
+    let margin: usize = a.get(6).map_or(1, |m| m.parse().unwrap());
+    let band: usize = a.get(7).map_or(8, |m| m.parse().unwrap());
+    let mut params = Params::for_problem(&problem, level);
+    params.edge = Edge::Zero;
+    params.nested = false;
+    params.accuracy.error_levels = 0;
+    params.accuracy.target = None;
+    params.accuracy.refinement_levels = 0;
+    params.accuracy.require_positive_film = false;
+    // PROBE_OUTTOL: the cycles' output tolerance (the rounds converge to about it).
+    if let Some(t) = std::env::var_os("PROBE_OUTTOL") {
+        params.stopping.output_tolerance = t.to_str().unwrap().parse().unwrap();
+    }
+    // PROBE_LOADTOL: the force balance's tolerance.
+    if let Some(t) = std::env::var_os("PROBE_LOADTOL") {
+        params.stopping.load_tolerance = t.to_str().unwrap().parse().unwrap();
+    }
+    let spec = PatchSpec {
+        x_start,
+        cells_level: patch_level,
+        margin,
+        band,
+    };
+    let (patch, _) = spec.rectangle(&params.domain, level);
+    println!("domain {:?}\npatch  {patch:?}", params.domain);
+    // PROBE_NO_UNIFORM skips the uniform solves (a heavy contact's level 9 takes most of an hour).
+    let uniform = if std::env::var_os("PROBE_NO_UNIFORM").is_some() {
+        vec![]
+    } else {
+        vec![level, level + 1]
+    };
+    for l in uniform {
+        let t = Instant::now();
+        let s = point::solve(
+            &problem,
+            &Params {
+                level: l,
+                ..params.clone()
+            },
+            None,
+        )
+        .unwrap();
+        println!(
+            "uniform L{l}: Hc {:.5} Hmin {:.5} mu {:.5} delta {:.6} ({:?}, {:.1} s)",
+            s.film.hc_moes,
+            s.film.hmin_moes,
+            s.friction.sliding,
+            s.delta,
+            s.info.method,
+            t.elapsed().as_secs_f64()
+        );
+    }
+    match solve_composite(&problem, &params, &spec, rounds) {
+        Ok(rs) => {
+            for (n, r) in rs.iter().enumerate() {
+                println!(
+                    "round {}: Hc {:.5} Hmin {:.5} mu {:.5} delta {:.6} dP {:.2e} ({:.1} s)",
+                    n + 1,
+                    r.hc_moes,
+                    r.hmin_moes,
+                    r.mu_bar_sliding,
+                    r.delta,
+                    r.patch_change,
+                    r.seconds
+                );
+            }
+        }
+        Err(e) => println!("composite failed: {e}"),
+    }
+}
