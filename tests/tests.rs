@@ -9,6 +9,7 @@ mod lubricant;
 mod mastercurve;
 mod one_rule;
 mod point_accuracy;
+mod point_composite;
 mod point_contact;
 mod predict;
 mod shards;
