@@ -78,13 +78,14 @@ fn main() {
         Ok(rs) => {
             for (n, r) in rs.iter().enumerate() {
                 println!(
-                    "round {}: Hc {:.5} Hmin {:.5} mu {:.5} delta {:.6} dP {:.2e} ({:.1} s)",
+                    "round {}: Hc {:.5} Hmin {:.5} mu {:.5} delta {:.6} dP {:.2e} residual {:.1e} ({:.1} s)",
                     n + 1,
                     r.hc_moes,
                     r.hmin_moes,
                     r.mu_bar_sliding,
                     r.delta,
                     r.patch_change,
+                    r.residual,
                     r.seconds
                 );
             }

@@ -25,16 +25,16 @@ fn an_inlet_patch_gives_the_central_film_of_the_next_level() {
     // Fig. 4 case 150: mineral oil A, 60 C, 3 GPa, 7 m/s, S 0.5 %, tau0 8 MPa (M 4 326,
     // L 9.4) on the heavy-load domain -1.75..1.25 x 1.5. Uniform levels 6 / 7 give Moes Hc
     // 1.6509 / 2.4659, 49 % apart. Level 6 with the inlet patch -1.21..-0.46 x 0.375 at level
-    // 7's mesh (a sixteenth of the domain; the centre outside it) settles in 7 rounds at
-    // 2.4648, 0.05 % from level 7 (measured; its rounds scatter by 0.1 %, the cycles' output
-    // tolerance at level 6). Within 0.5 %: a hundredth of the step between the levels. A
-    // one-way nesting cannot move the film outside its rectangle at all.
+    // 7's mesh (a sixteenth of the domain; the centre outside it) settles in 9 rounds (7 of
+    // single cycles, 2 of converged solves) at 2.4651, 0.03 % from level 7 (measured; the
+    // single-cycle rounds scatter by 0.2 %). Within 0.5 %: a hundredth of the step between
+    // the levels. A one-way nesting cannot move the film outside its rectangle at all.
     let p = problem(&physical("mineral-oil-a", 60.0, 3e9, 7.0, 0.005, 8e6, 1.0));
     let coarse = solve(&p, &uniform_params(&p, 6), None).unwrap();
     let fine = solve(&p, &uniform_params(&p, 7), None).unwrap();
-    let rounds = solve_composite(&p, &uniform_params(&p, 6), &PatchSpec::inlet(6), 10).unwrap();
+    let rounds = solve_composite(&p, &uniform_params(&p, 6), &PatchSpec::inlet(6), 16).unwrap();
     let last = rounds.last().unwrap();
-    assert!(rounds.len() < 10, "the rounds settle: {rounds:?}");
+    assert!(rounds.len() < 16, "the rounds settle: {rounds:?}");
     assert!(rel(coarse.film.hc_moes, fine.film.hc_moes) > 0.3);
     assert!(
         rel(last.hc_moes, fine.film.hc_moes) < 5e-3,

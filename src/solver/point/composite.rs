@@ -90,13 +90,17 @@ pub struct CompositeRound {
     pub delta: f64,
     /// The largest change of the patch pressure from the round before (0 in the first).
     pub patch_change: f64,
+    /// The whole-domain level's mean residual at the round's start (with the forcing of the
+    /// round before).
+    pub residual: f64,
     /// Seconds since the start of the composite solve.
     pub seconds: f64,
 }
 
 /// Solves `problem` on `params`' domain and level with the patch `spec`, round after round
 /// until the central film and the friction change by less than the output tolerance between
-/// two rounds, or for `max_rounds`; the outputs of every round.
+/// two rounds of converged whole-domain solves, or for `max_rounds`; the outputs of every
+/// round.
 pub fn solve_composite(
     problem: &Problem,
     params: &Params,
@@ -139,13 +143,19 @@ pub fn solve_composite(
     let mut observe = |_: &crate::solver::output::Progress| {};
     let (mut mg, converged) = cold::converge(problem, (&wide, None), &mut observe, Vec::new())?;
     let mut tally: Tally = converged.tally;
+    // One cycle of the whole-domain level per round where it converged by cycles (the fast
+    // adaptive composite-grid method's outer iteration) until the outputs settle, then
+    // converged solves (polishing) until they settle again; converged solves throughout
+    // where it needed the Newton-Krylov finish (M 19 205: single cycles diverged within ten
+    // rounds).
+    let mut polishing = converged.method != Method::Cycles;
     let top = mg.levels.len() - 1;
     let model = mg.model;
     let geometry = mg.levels[top].grid.sample(|x, y| model.geometry(x, y));
     let mut previous: Option<PointSolution> = None;
     let mut out: Vec<CompositeRound> = Vec::with_capacity(max_rounds);
     for _ in 0..max_rounds {
-        mg.refresh(top);
+        let (residual, _) = mg.residual_norm(top);
         let coarse = &mg.levels[top];
         let state = (&coarse.p[..], &coarse.h[..], mg.delta);
         let outside = Surround::new(problem, &coarse.grid, state, &patch, (pg.hx, pg.hy));
@@ -179,11 +189,15 @@ pub fn solve_composite(
         );
         out.push(CompositeRound {
             delta: mg.delta,
+            residual,
             seconds: began.elapsed().as_secs_f64(),
             ..round
         });
         if settled(&out, tolerance) {
-            break;
+            if polishing {
+                break;
+            }
+            polishing = true;
         }
         // The patch as a level (its film from its own pressure and the surroundings'),
         // restricted, and carried into the whole-domain level.
@@ -199,10 +213,14 @@ pub fn solve_composite(
             (&model, &geometry),
         );
         previous = Some(sol);
-        let known = Known::default();
-        let how = How::from_converged(&wide, &known);
-        if converge_level(&mut mg, top, &wide, &how, &mut tally, &mut observe).is_none() {
-            return Err(tally.not_converged(&wide));
+        if !polishing {
+            mg.cycle(top);
+        } else {
+            let known = Known::default();
+            let how = How::from_converged(&wide, &known);
+            if converge_level(&mut mg, top, &wide, &how, &mut tally, &mut observe).is_none() {
+                return Err(tally.not_converged(&wide));
+            }
         }
     }
     Ok(out)
@@ -253,6 +271,7 @@ fn round_outputs(
                 .map(|(a, b)| (a - b).abs())
                 .fold(0.0, f64::max)
         }),
+        residual: 0.0,
         seconds: 0.0,
     }
 }
