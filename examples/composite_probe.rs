@@ -3,7 +3,7 @@
 //!
 //! `cargo run --release --example composite_probe -- CASE LEVEL X_START PATCH_LEVEL ROUNDS [MARGIN [BAND]]`
 //!
-//! `CASE` as `nested_probe`. The domain is the rule's with the `P = 0` edge; the patch's inlet
+//! `CASE` as `nested_probe`. The domain and edge are the rule's (`PROBE_EDGE_ZERO`: `P = 0`); the patch's inlet
 //! is the grid line nearest `X_START`, and it spans `2^PATCH_LEVEL` cells of the level in each
 //! direction, symmetric about `Y = 0`. Prints the uniform solutions at `LEVEL` and `LEVEL + 1`
 //! and the composite's outputs after each round.
@@ -11,7 +11,7 @@ mod common;
 
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
-use repro::solver::point::composite::{solve_composite, PatchSpec};
+use repro::solver::point::composite::{solve_composite, solve_composite_estimated, PatchSpec};
 use repro::solver::point::{self, Edge, Params};
 use std::time::Instant;
 
@@ -25,7 +25,10 @@ fn main() {
     let margin: usize = a.get(6).map_or(1, |m| m.parse().unwrap());
     let band: usize = a.get(7).map_or(8, |m| m.parse().unwrap());
     let mut params = Params::for_problem(&problem, level);
-    params.edge = Edge::Zero;
+    // PROBE_EDGE_ZERO: the P = 0 edge instead of the rule's far field.
+    if std::env::var_os("PROBE_EDGE_ZERO").is_some() {
+        params.edge = Edge::Zero;
+    }
     params.nested = false;
     params.accuracy.error_levels = 0;
     params.accuracy.target = None;
@@ -91,5 +94,25 @@ fn main() {
             }
         }
         Err(e) => println!("composite failed: {e}"),
+    }
+    // PROBE_ESTIMATE: the composites at the two levels below and the Richardson estimates.
+    if std::env::var_os("PROBE_ESTIMATE").is_some() {
+        let t = Instant::now();
+        match solve_composite_estimated(&problem, &params, &spec, (2, rounds)) {
+            Ok((r, [hc, mu])) => {
+                for (name, value, e) in [("Hc", r.hc_moes, hc), ("mu", r.mu_bar_sliding, mu)] {
+                    if let Some(e) = e {
+                        println!(
+                            "estimate {name}: {value:.5} error {:.3} % order {:?} extrapolated {:.5}",
+                            100.0 * e.relative(value),
+                            e.order,
+                            e.extrapolated
+                        );
+                    }
+                }
+                println!("estimated composite: {:.1} s", t.elapsed().as_secs_f64());
+            }
+            Err(e) => println!("estimate failed: {e}"),
+        }
     }
 }

@@ -14,19 +14,21 @@
 //! the patch too: a patch over the inlet, where a heavy contact's central film is formed,
 //! gives the central film of the uniform grid one level finer.
 //!
-//! Only the `P = 0` edge ([`Edge::Zero`]): the fitted far field refits its amplitude, and
-//! resets the force balance, inside the cycles. The study: `examples/composite_probe.rs`.
+//! The whole-domain level keeps its edge (the fitted far field refits its amplitude in its
+//! converged rounds; the patch's load correction survives it, [`LevelFields::load_correction`]).
+//! The study: `examples/composite_probe.rs`.
 
 use super::cold;
 use super::converge::{converge_level, How, Tally};
-use super::level::{LevelFields, Model, LOAD};
+use super::level::{LevelFields, Model};
 use super::nested::Surround;
 use super::stopping::{Known, OUTPUT_TOLERANCE};
 use super::transfer::coarsen;
-use super::{solve_with, Edge, Params, PointSolution, Start, LOADED_FILM_FACTOR};
+use super::{solve_with, Params, PointSolution, Start, LOADED_FILM_FACTOR};
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{Method, SolveError};
+use crate::solver::richardson::{self, ErrorEstimate};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -108,10 +110,10 @@ pub fn solve_composite(
     max_rounds: usize,
 ) -> Result<Vec<CompositeRound>, SolveError> {
     let began = Instant::now();
-    if params.edge != Edge::Zero || spec.cells_level > params.level || spec.margin == 0 {
+    if spec.cells_level > params.level || spec.margin == 0 {
         return Err(SolveError::InvalidParams(
-            "the composite prototype takes the P = 0 edge, a patch within the domain and a \
-             margin of at least one cell"
+            "the composite prototype takes a patch within the domain and a margin of at least \
+             one cell"
                 .into(),
         ));
     }
@@ -151,7 +153,8 @@ pub fn solve_composite(
     let mut polishing = converged.method != Method::Cycles;
     let top = mg.levels.len() - 1;
     let model = mg.model;
-    let geometry = mg.levels[top].grid.sample(|x, y| model.geometry(x, y));
+    // The film equation's right-hand side of the top level as it is, outside the patch.
+    let geometry = mg.levels[top].hrhs.clone();
     let mut previous: Option<PointSolution> = None;
     let mut out: Vec<CompositeRound> = Vec::with_capacity(max_rounds);
     for _ in 0..max_rounds {
@@ -313,7 +316,54 @@ fn carry_into(
             under[sg.idx(ic, jc)] = level.p[at(ic, jc)];
         }
     }
-    level.load = LOAD - (fine.grid.integrate(&fine.p) - sg.integrate(&under));
-    level.rg = -level.load;
+    level.load_correction = fine.grid.integrate(&fine.p) - sg.integrate(&under);
+    level.rg = -(level.load - level.load_correction);
     level.invalidate();
+}
+
+/// The composite's outputs at `params.level` (its last round) and the Richardson estimates
+/// of its central film and sliding friction ([`richardson::estimate`], Moes units and
+/// `mu-bar`) over the composites at the `levels` levels below: the same rectangle (on the
+/// coarsest one's grid lines), its patch one level coarser with each, so that the meshes
+/// halve together (docs/ACCURACY_NOTES.md: case 150's composites converge at order 1.96).
+pub fn solve_composite_estimated(
+    problem: &Problem,
+    params: &Params,
+    spec: &PatchSpec,
+    (levels, max_rounds): (u32, usize),
+) -> Result<(CompositeRound, [Option<ErrorEstimate>; 2]), SolveError> {
+    let coarsest = params.level.saturating_sub(levels);
+    let drop = params.level - coarsest;
+    if spec.cells_level < drop {
+        return Err(SolveError::InvalidParams(
+            "the patch must have cells at the coarsest level of the estimate".into(),
+        ));
+    }
+    let (rect, _) = PatchSpec {
+        cells_level: spec.cells_level - drop,
+        ..*spec
+    }
+    .rectangle(&params.domain, coarsest);
+    let mut runs = Vec::new();
+    for level in coarsest..=params.level {
+        let at = PatchSpec {
+            x_start: rect.x_start,
+            cells_level: spec.cells_level + level - params.level,
+            ..*spec
+        };
+        let rounds = solve_composite(
+            problem,
+            &Params {
+                level,
+                ..params.clone()
+            },
+            &at,
+            max_rounds,
+        )?;
+        runs.push(rounds.last().cloned().expect("at least one round"));
+    }
+    let hc: Vec<f64> = runs.iter().map(|r| r.hc_moes).collect();
+    let mu: Vec<f64> = runs.iter().map(|r| r.mu_bar_sliding).collect();
+    let last = runs.pop().expect("the composite at the level itself");
+    Ok((last, [richardson::estimate(&hc), richardson::estimate(&mu)]))
 }

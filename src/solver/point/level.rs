@@ -33,6 +33,9 @@ pub(crate) struct LevelFields {
     pub edge: Vec<f64>,
     /// The load the domain carries: [`LOAD`] less the far field's outside the domain.
     pub load: f64,
+    /// What a composite grid's patch carries beyond this level's own pressure over it, taken
+    /// off the force balance with the far field's ([`super::composite`]; 0 elsewhere).
+    pub load_correction: f64,
     /// `rho H^3 / (eta_x lambda)` at the nodes.
     pub ex: Vec<f64>,
     /// `kappa^2 rho H^3 / (eta_y lambda)` at the nodes.
@@ -68,6 +71,7 @@ impl LevelFields {
             rg: -LOAD,
             edge: vec![0.0; n],
             load: LOAD,
+            load_correction: 0.0,
             ex: vec![0.0; n],
             ey: vec![0.0; n],
             rho: vec![1.0; n],
@@ -202,7 +206,7 @@ impl LevelFields {
     pub fn set_far_field(&mut self, far: &FarField, delta: f64) {
         self.edge = self.grid.sample_boundary(|x, y| far.pressure(x, y, delta));
         self.load = LOAD - far.outside_load(&self.grid.domain(), delta);
-        self.rg = -self.load;
+        self.rg = -(self.load - self.load_correction);
         for k in self.grid.boundary() {
             self.p[k] = self.edge[k];
         }
