@@ -11,7 +11,8 @@ mod common;
 
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
-use repro::solver::point::composite::{solve_composite, solve_composite_estimated, PatchSpec};
+use repro::solver::output::Output;
+use repro::solver::point::composite::{solve_composite, PatchSpec};
 use repro::solver::point::{self, Edge, Params};
 use std::time::Instant;
 
@@ -95,22 +96,32 @@ fn main() {
         }
         Err(e) => println!("composite failed: {e}"),
     }
-    // PROBE_ESTIMATE: the composites at the two levels below and the Richardson estimates.
+    // PROBE_ESTIMATE: the product's composite solve (`Params::patch`) with its error
+    // estimate over the composites at the two levels below.
     if std::env::var_os("PROBE_ESTIMATE").is_some() {
-        let t = Instant::now();
-        match solve_composite_estimated(&problem, &params, &spec, (2, rounds)) {
-            Ok((r, [hc, mu])) => {
-                for (name, value, e) in [("Hc", r.hc_moes, hc), ("mu", r.mu_bar_sliding, mu)] {
-                    if let Some(e) = e {
+        let mut with_patch = params.clone();
+        with_patch.patch = Some(spec);
+        with_patch.accuracy.error_levels = 2;
+        match point::solve(&problem, &with_patch, None) {
+            Ok(s) => {
+                let errors = s.errors.as_ref().expect("estimated");
+                for (name, output, value) in [
+                    ("Hc", Output::HCentral, s.film.h_central),
+                    ("mu", Output::MuBarSliding, s.friction.sliding),
+                ] {
+                    if let Some(e) = errors.estimate(output) {
                         println!(
-                            "estimate {name}: {value:.5} error {:.3} % order {:?} extrapolated {:.5}",
+                            "estimate {name}: {value:.6} error {:.3} % order {:?} extrapolated {:.6}",
                             100.0 * e.relative(value),
                             e.order,
                             e.extrapolated
                         );
                     }
                 }
-                println!("estimated composite: {:.1} s", t.elapsed().as_secs_f64());
+                println!(
+                    "estimated composite: Hc {:.5} (Moes), {:.1} s",
+                    s.film.hc_moes, s.info.seconds
+                );
             }
             Err(e) => println!("estimate failed: {e}"),
         }

@@ -264,6 +264,32 @@ fn the_line_contact_refuses_an_edge() {
     assert!(err.contains("--edge"), "{err}");
 }
 
+/// `--patch inlet` solves a mid-range contact on the composite grid and says where the patch
+/// is; a light contact (nested domains already) and a line contact refuse it, naming the flag.
+#[test]
+fn the_inlet_patch_is_reported_and_refused_where_it_does_not_apply() {
+    let (code, out, err) = repro(&[
+        "solve", "--m", "500", "--l", "10", "--s-bar", "0.1", "--level", "5", "--patch", "inlet",
+        "--json", "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    let x = |key: &str| v["patch"][key].as_f64().unwrap();
+    assert!(x("x_start") < -1.0 && x("x_end") < 0.0, "{}", v["patch"]);
+    for refused in [
+        &[
+            "solve", "--m", "5", "--l", "10", "--s-bar", "0.1", "--patch", "inlet",
+        ][..],
+        &[
+            "solve", "--line", "--m", "20", "--l", "10", "--s-bar", "0", "--patch", "inlet",
+        ][..],
+    ] {
+        let (code, _, err) = repro(refused);
+        assert_ne!(code, 0, "{refused:?} must fail");
+        assert!(err.contains("--patch"), "{err}");
+    }
+}
+
 /// Output into a pipe whose reader has gone (`repro list | head -1` once `head` has what it
 /// wants) ends the program by SIGPIPE, silently, as any Unix filter ends, not by a panic with
 /// a backtrace (exit 101, as before). The read end is closed before the program starts, so

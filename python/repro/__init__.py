@@ -126,7 +126,8 @@ def solve(
     ``_`` for ``-``: ``m``, ``l``, ``s_bar``, ``d`` in Moes groups, or ``lubricant``,
     ``temperature``, ``ph``, ``um``, ``slip``, ``tau0`` physically, or a datasheet ``nu40`` /
     ``iso_vg``, ``nu100`` / ``vi``, ``rho15``, ``base_oil``; ``level``, ``line=True`` for a
-    line contact, ``cold=True``, physics ``viscosity``, ``density``, ``rheology``).
+    line contact, ``cold=True``, physics ``viscosity``, ``density``, ``rheology``,
+    ``patch="inlet"`` for the composite grid's inlet patch).
 
     The case goes through the one case -> parameters rule and is solved from its base, so the
     result has the bits of ``repro solve --json``. The GIL is released during the solve;

@@ -121,6 +121,7 @@ def solve(
     level: Optional[int] = ...,
     domain: Optional[str] = ...,
     edge: Optional[str] = ...,
+    patch: Optional[str] = ...,
     max_cycles: Optional[int] = ...,
     newton_steps: Optional[int] = ...,
     rolling: bool = ...,

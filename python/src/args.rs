@@ -14,6 +14,7 @@ use repro::physics::viscosity::ViscosityLaw;
 use repro::report::solve::{lubricant_spec, DatasheetInputs, RheologyChoice, SolveInputs};
 use repro::solver::grid::Domain;
 use repro::solver::point;
+use repro::solver::point::composite::Patch;
 
 /// The keywords a function takes beyond its signature (`**keywords`): each group takes its
 /// own by name ([`Keywords::take`]) and [`Keywords::finish`] refuses what is left, as Python
@@ -229,6 +230,12 @@ pub fn edge(v: Option<&str>) -> PyResult<Option<point::Edge>> {
             ("far-field", point::Edge::FarField),
         ],
     )
+}
+
+/// `patch`: `"inlet"` for the composite grid's inlet patch, or `None` / `"none"` for the
+/// rule's grid.
+pub fn patch(v: Option<&str>) -> PyResult<Option<Patch>> {
+    Ok(choice("patch", v, &[("none", None), ("inlet", Some(Patch::Inlet))])?.flatten())
 }
 
 /// The element `i` of a broadcast input (length 1 or n).

@@ -2,7 +2,7 @@
 //! `repro solve`, with the GIL released; the report's JSON and text and the fields as numpy
 //! arrays.
 
-use crate::args::{contact, density, domain, edge, rheology, viscosity};
+use crate::args::{contact, density, domain, edge, patch, rheology, viscosity};
 use crate::errors::{solve_error, value_error};
 use numpy::ndarray::Array2;
 use numpy::IntoPyArray;
@@ -24,7 +24,7 @@ use std::time::Instant;
 #[pyo3(signature = (*, m=None, l=None, s_bar=None, d=None, temperature=None, ph=None,
     um=None, tau0=None, slip=None, viscosity=None, density=None, rheology=None,
     lambda_lss=None, tau_l0=None, line=false, level=None, domain=None, edge=None,
-    max_cycles=None, newton_steps=None, rolling=true, cold=false, k_solid=None,
+    patch=None, max_cycles=None, newton_steps=None, rolling=true, cold=false, k_solid=None,
     k_lubricant=None, progress=None, **keywords))]
 #[allow(clippy::too_many_arguments)]
 pub fn _solve<'py>(
@@ -47,6 +47,7 @@ pub fn _solve<'py>(
     level: Option<u32>,
     domain: Option<&str>,
     edge: Option<&str>,
+    patch: Option<&str>,
     max_cycles: Option<usize>,
     newton_steps: Option<usize>,
     rolling: bool,
@@ -84,6 +85,7 @@ pub fn _solve<'py>(
         level,
         domain: self::domain(domain)?,
         edge: self::edge(edge)?,
+        patch: self::patch(patch)?,
         max_cycles: max_cycles.unwrap_or(defaults.max_cycles),
         newton_steps: newton_steps.unwrap_or(defaults.newton_steps),
         rolling_friction: rolling,

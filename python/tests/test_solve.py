@@ -176,3 +176,21 @@ def test_progress_hears_every_step():
     s = repro.solve(m=20, l=10, s_bar=0.5, level=5, cold=True,
                     progress=lambda level, step, residual, hc: steps.append((level, step)))
     assert len(steps) >= s.as_dict()["cycles"] > 0
+
+
+# Fig. 4 case 37 (M 772, the paper's domain) on the composite grid with the inlet patch.
+COMPOSITE = dict(lubricant="mineral-oil-a", temperature=40.0, ph=2e9, um=7.0, slip=0.001,
+                 tau0=4e6, level=5, patch="inlet")
+
+
+def test_the_composite_grid_is_the_cli_one(cli):
+    expected = timeless(cli_json(cli, COMPOSITE))
+    s = repro.solve(**COMPOSITE)
+    assert timeless(s.as_dict()) == expected
+    patch = expected["patch"]
+    assert patch["x_start"] < -1.0 < patch["x_end"] < 0.0
+
+
+def test_a_bad_patch_names_the_keyword():
+    with pytest.raises(ValueError, match="patch"):
+        repro.solve(**dict(COMPOSITE, patch="everywhere"))

@@ -3,8 +3,8 @@
 //! datasheet, the pipeline's [`Context`]. Every error names the flag.
 
 use super::args::{
-    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, RheologyArg, SolveArgs, TargetArgs,
-    ViscosityArg,
+    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, PatchArg, RheologyArg, SolveArgs,
+    TargetArgs, ViscosityArg,
 };
 use anyhow::{Context as _, Result};
 use repro::physics::density::DensityLaw;
@@ -17,6 +17,7 @@ use repro::report::solve::{self, DatasheetInputs, RheologyChoice, SolveInputs};
 pub use repro::report::solve::{flag_error, lubricant_spec, physics};
 use repro::solver::grid::Domain;
 use repro::solver::point;
+use repro::solver::point::composite::Patch;
 
 /// Checks a grid level flag.
 pub fn check_level(flag: &str, level: u32) -> Result<u32> {
@@ -104,6 +105,10 @@ impl SolveArgs {
                 EdgeArg::Auto => None,
                 EdgeArg::Zero => Some(point::Edge::Zero),
                 EdgeArg::FarField => Some(point::Edge::FarField),
+            },
+            patch: match self.patch {
+                PatchArg::None => None,
+                PatchArg::Inlet => Some(Patch::Inlet),
             },
             max_cycles: self.max_cycles,
             newton_steps: self.newton_steps,

@@ -38,10 +38,15 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
     // expert's): a key without either is a solve to its level as given.
     let rule =
         params.edge == Edge::FarField && params.friction.region == FrictionRegion::LoadedFilm;
-    match (rule, params.accuracy.target) {
+    let plain = match (rule, params.accuracy.target) {
         (true, None) => key_of(&key),
         (false, None) => key_of(&(key, setup(params))),
         (_, Some(target)) => key_of(&(key, setup(params), target)),
+    };
+    // A composite grid's patch, where one is set: the key of the grid without it, and it.
+    match &params.patch {
+        None => plain,
+        Some(p) => key_of(&(plain, (p.x_start, p.cells_level, p.margin, p.band))),
     }
 }
 

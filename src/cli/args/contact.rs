@@ -54,6 +54,19 @@ pub enum EdgeArg {
     FarField,
 }
 
+#[derive(Debug, Clone, Copy, ValueEnum)]
+pub enum PatchArg {
+    /// The rule's grid: uniform, or nested domains for the light contacts.
+    None,
+    /// A composite grid: the domain at the level and a patch over the inlet's pressure rise
+    /// (X from -1.2, a quarter of the domain per direction) at half its mesh, coupled both
+    /// ways. The central film of a contact from M of about 300 up comes out as the uniform
+    /// grid one level finer gives it, at 40-80 % of that grid's time; the friction moves
+    /// about half-way, the minimum film not (docs/ACCURACY_NOTES.md, "Composite grid").
+    /// Solved cold, at the level given, with its own error estimate.
+    Inlet,
+}
+
 #[derive(Debug, Args)]
 #[command(allow_negative_numbers = true)]
 pub struct SolveArgs {
@@ -152,6 +165,9 @@ pub struct SolveArgs {
     /// The condition on the domain's edge (an expert override, like --domain).
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub edge: EdgeArg,
+    /// A composite grid's patch (an expert option; not the figures').
+    #[arg(long, value_enum, default_value = "none", help_heading = "Numerics")]
+    pub patch: PatchArg,
     /// Most multigrid cycles on the finest level.
     #[arg(long = "max-cycles", default_value_t = Params::default().multigrid.max_cycles, help_heading = "Numerics")]
     pub max_cycles: usize,

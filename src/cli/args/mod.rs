@@ -7,8 +7,8 @@ mod contact;
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 pub use contact::{
-    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, PredictArgs, RheologyArg, SolveArgs,
-    ThermalArgs, ViscosityArg,
+    BaseOilArg, DatasheetArgs, DensityArg, DomainArg, EdgeArg, PatchArg, PredictArgs, RheologyArg,
+    SolveArgs, ThermalArgs, ViscosityArg,
 };
 use repro::paper::{find, Target, REGISTRY};
 use std::path::PathBuf;

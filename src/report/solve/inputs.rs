@@ -15,6 +15,7 @@ use crate::physics::rheology::{LimitingShearStress, Rheology};
 use crate::physics::thermal::{FilmProperties, Solid, ThermalInputs};
 use crate::physics::viscosity::ViscosityLaw;
 use crate::solver::grid::Domain;
+use crate::solver::point::composite::Patch;
 use crate::solver::{line, point};
 
 /// An input that cannot be used, as one line that starts with the flag it names
@@ -282,6 +283,8 @@ pub struct SolveInputs {
     pub domain: Option<Domain>,
     /// The edge condition, over the rule's (`None`: the rule's).
     pub edge: Option<point::Edge>,
+    /// A composite grid's patch (`None`: the rule's uniform grid or nested domains).
+    pub patch: Option<Patch>,
     /// Most multigrid cycles on the finest level (Newton iterations of a line contact).
     pub max_cycles: usize,
     /// Most Newton steps per level of the Newton-Krylov finish.
@@ -325,6 +328,7 @@ impl Default for SolveInputs {
             level: None,
             domain: None,
             edge: None,
+            patch: None,
             max_cycles: params.multigrid.max_cycles,
             newton_steps: params.newton.steps,
             rolling_friction: true,
@@ -399,6 +403,16 @@ impl SolveInputs {
         params.multigrid.max_cycles = self.max_cycles;
         params.newton.steps = self.newton_steps;
         params.friction.rolling = self.rolling_friction;
+        if let Some(patch) = self.patch {
+            if params.nested {
+                bail!(
+                    "--patch: the inlet patch is for the paper's and the heavy-load domains \
+                     (M from about 300 up), whose central film is made in the inlet; this \
+                     case is solved on nested domains already (drop --patch)"
+                );
+            }
+            params.patch = Some(patch.spec(params.level));
+        }
         Ok(params)
     }
 
@@ -458,6 +472,9 @@ impl SolveInputs {
         }
         if self.edge.is_some() {
             bail!("--edge: the line contact has its own edge (P = 0); drop --edge with --line");
+        }
+        if self.patch.is_some() {
+            bail!("--patch: the composite grid is the point contact's; drop --patch with --line");
         }
         Ok(())
     }

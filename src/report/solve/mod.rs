@@ -88,6 +88,9 @@ impl Solved {
             Solved::Point(p) => {
                 let mut v = point_report(&p.problem, &p.solution).json();
                 v["thermal"] = thermal::json_of(&p.heat);
+                if let Some(patch) = report::patch_json(&p.solution) {
+                    v["patch"] = patch;
+                }
                 if let Some(nested) = report::nested_json(&p.solution) {
                     v["nested"] = nested;
                 }
@@ -135,7 +138,9 @@ pub fn solve(
     let problem = Problem::from_case(&case, &lubricants).map_err(flag_error)?;
     let params = inputs.params(&problem)?;
     let thermal = inputs.thermal_inputs()?;
-    let solution = if inputs.cold {
+    // A composite grid starts cold (its whole-domain level from the Hertzian pressure): a
+    // base would be solved for nothing.
+    let solution = if inputs.cold || params.patch.is_some() {
         point::solve(&problem, &params, observer).map_err(SolveFailure::Solve)?
     } else {
         let level = params.level;

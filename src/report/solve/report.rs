@@ -265,6 +265,7 @@ pub(super) fn point_text(problem: &Problem, s: &PointSolution) -> String {
         tau_c,
         (tau_c / 5.0).asinh(),
     ) + &nested_text(s)
+        + &patch_text(s)
         + &point_report(problem, s).error_text()
         + &limit
 }
@@ -296,6 +297,25 @@ fn nested_text(s: &PointSolution) -> String {
         describe(inner),
         describe(outer)
     )
+}
+
+/// The composite grid's line of a summary (empty without a patch): the patch's rectangle and
+/// mesh inside the whole domain's.
+fn patch_text(s: &PointSolution) -> String {
+    let Some((d, h)) = s.patch else {
+        return String::new();
+    };
+    let whole = s.grid.domain();
+    format!(
+        "patch       X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4}) inside X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4}), coupled both ways\n",
+        d.x_start, d.x_end, d.y_half, h, whole.x_start, whole.x_end, whole.y_half, s.grid.hx
+    )
+}
+
+/// The same for `--json`: `{"x_start", "x_end", "y_half", "mesh"}`.
+pub(super) fn patch_json(s: &PointSolution) -> Option<serde_json::Value> {
+    let (d, h) = s.patch?;
+    Some(json!({"x_start": d.x_start, "x_end": d.x_end, "y_half": d.y_half, "mesh": h}))
 }
 
 /// The same for `--json`: `{"innermost": {...}, "case_domain": {...}}`.

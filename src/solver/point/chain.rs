@@ -199,12 +199,7 @@ pub(super) fn solve_point(
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
     let clock = Instant::now();
-    let mut observer = observer;
-    let mut observe = |p: &Progress| {
-        if let Some(o) = observer.as_mut() {
-            o(p)
-        }
-    };
+    let mut observe = super::observing(observer);
     // Where a rectangle does not converge (Fig. 6's lightest members at S 0.1 %: their
     // Newton-Krylov finish on the rectangle stalls), the case is solved on its one
     // case-sized domain, as without the chain, with that domain's own error estimate.

@@ -20,63 +20,20 @@
 
 use super::cold;
 use super::converge::{converge_level, How, Tally};
-use super::level::{LevelFields, Model};
+use super::level::{LevelFields, Model, LOAD};
 use super::nested::Surround;
+pub use super::patch::{Patch, PatchSpec};
 use super::stopping::{Known, OUTPUT_TOLERANCE};
 use super::transfer::coarsen;
-use super::{solve_with, Params, PointSolution, Start, LOADED_FILM_FACTOR};
+use super::{solve_with, Params, PointSolution, Start, LOADED_FILM_FACTOR, MAX_LEVEL, MIN_LEVEL};
 use crate::physics::case::Problem;
-use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::{Method, SolveError};
-use crate::solver::richardson::{self, ErrorEstimate};
+use crate::solver::grid::Grid;
+use crate::solver::output::{
+    Film, Friction, Info, LadderStop, LevelValues, Method, OutputErrors, Progress, SolveError,
+    StartKind,
+};
 use std::sync::Arc;
 use std::time::Instant;
-
-/// Where a patch lies and how it is coupled.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PatchSpec {
-    /// Its inlet: the whole-domain level's grid line nearest this `X`.
-    pub x_start: f64,
-    /// It spans `2^cells_level` cells of the whole-domain level in each direction,
-    /// symmetric about `Y = 0`: its own grid is level `cells_level` on its rectangle.
-    pub cells_level: u32,
-    /// The whole-domain nodes that take the patch's forcing: those at least this many cells
-    /// inside its edge (1: every interior node; with 2 a ring of coarse equations under the
-    /// patch made the rounds alternate).
-    pub margin: usize,
-    /// Width in whole-domain cells of the band around the patch over which the deformation
-    /// by the outside pressure is taken at the patch's mesh ([`Surround::banded`]; 0: the
-    /// wide cells split at the edge, [`Surround::new`]).
-    pub band: usize,
-}
-
-impl PatchSpec {
-    /// The heavy contact's inlet patch of the study: `-1.2` to about `-0.45` Hertzian radii on
-    /// the heavy-load domain at any level (a quarter of the domain in each direction),
-    /// interior forcing, a band of eight cells.
-    pub fn inlet(level: u32) -> Self {
-        PatchSpec {
-            x_start: -1.2,
-            cells_level: level - 1,
-            margin: 1,
-            band: 8,
-        }
-    }
-
-    /// The patch's rectangle on `level`'s grid of `domain`, and its corner node there.
-    pub fn rectangle(&self, domain: &Domain, level: u32) -> (Domain, [usize; 2]) {
-        let coarse = Grid::level(domain, level);
-        let cells = 1usize << self.cells_level;
-        let i0 = ((self.x_start - coarse.x0) / coarse.hx).round() as usize;
-        let j0 = (coarse.ny - cells) / 2;
-        let patch = Domain {
-            x_start: coarse.x(i0),
-            x_end: coarse.x(i0 + cells),
-            y_half: -coarse.y(j0),
-        };
-        (patch, [i0, j0])
-    }
-}
 
 /// The outputs after one round of the composite iteration.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,10 +41,17 @@ pub struct CompositeRound {
     /// Central film (Moes), on the patch where the centre is inside it, else on the
     /// whole-domain level.
     pub hc_moes: f64,
+    /// The same in `h/c`.
+    pub h_central: f64,
+    /// The minimum film below in `h/c`.
+    pub h_min: f64,
     /// The smaller of the patch's minimum film and the whole-domain level's outside it (Moes).
     pub hmin_moes: f64,
     /// Sliding `mu-bar`: the patch's loaded film plus the whole-domain level's outside it.
     pub mu_bar_sliding: f64,
+    /// Sliding plus rolling `mu-bar` likewise (the sliding part where rolling is not
+    /// computed).
+    pub mu_bar_total: f64,
     /// The film constant.
     pub delta: f64,
     /// The largest change of the patch pressure from the round before (0 in the first).
@@ -109,16 +73,50 @@ pub fn solve_composite(
     spec: &PatchSpec,
     max_rounds: usize,
 ) -> Result<Vec<CompositeRound>, SolveError> {
+    Ok(run(problem, params, spec, max_rounds, &mut |_| {})?.rounds)
+}
+
+/// A composite solve: its rounds, whether they settled, the whole-domain level's last state,
+/// the last patch solution with its surroundings, and the whole-domain level's tallies.
+struct Run {
+    rounds: Vec<CompositeRound>,
+    settled: bool,
+    grid: Grid,
+    p: Vec<f64>,
+    h: Vec<f64>,
+    delta: f64,
+    load_error: f64,
+    patch: PointSolution,
+    outside: Surround,
+    tally: Tally,
+    method: Method,
+}
+
+fn run(
+    problem: &Problem,
+    params: &Params,
+    spec: &PatchSpec,
+    max_rounds: usize,
+    observe: &mut dyn FnMut(&Progress),
+) -> Result<Run, SolveError> {
     let began = Instant::now();
-    if spec.cells_level > params.level || spec.margin == 0 {
-        return Err(SolveError::InvalidParams(
-            "the composite prototype takes a patch within the domain and a margin of at least \
-             one cell"
-                .into(),
-        ));
+    if spec.cells_level > params.level
+        || spec.cells_level < MIN_LEVEL
+        || params.level > MAX_LEVEL
+        || spec.margin == 0
+        || max_rounds == 0
+    {
+        return Err(SolveError::InvalidParams(format!(
+            "the composite grid takes a level up to {MAX_LEVEL}, a patch within the domain \
+             of level {MIN_LEVEL} or finer, a margin of at least one cell and a round \
+             (level {}, patch level {}, margin {})",
+            params.level, spec.cells_level, spec.margin
+        )));
     }
     let mut wide = params.clone();
+    wide.multigrid.coarsest_level = params.multigrid.coarsest_level.min(params.level);
     wide.nested = false;
+    wide.patch = None;
     wide.accuracy.error_levels = 0;
     wide.accuracy.target = None;
     wide.accuracy.refinement_levels = 0;
@@ -142,21 +140,22 @@ pub fn solve_composite(
     } else {
         OUTPUT_TOLERANCE
     };
-    let mut observe = |_: &crate::solver::output::Progress| {};
-    let (mut mg, converged) = cold::converge(problem, (&wide, None), &mut observe, Vec::new())?;
+    let (mut mg, converged) = cold::converge(problem, (&wide, None), observe, Vec::new())?;
     let mut tally: Tally = converged.tally;
+    let method = converged.method;
     // One cycle of the whole-domain level per round where it converged by cycles (the fast
     // adaptive composite-grid method's outer iteration) until the outputs settle, then
     // converged solves (polishing) until they settle again; converged solves throughout
     // where it needed the Newton-Krylov finish (M 19 205: single cycles diverged within ten
     // rounds).
-    let mut polishing = converged.method != Method::Cycles;
+    let mut polishing = method != Method::Cycles;
     let top = mg.levels.len() - 1;
     let model = mg.model;
     // The film equation's right-hand side of the top level as it is, outside the patch.
     let geometry = mg.levels[top].hrhs.clone();
-    let mut previous: Option<PointSolution> = None;
-    let mut out: Vec<CompositeRound> = Vec::with_capacity(max_rounds);
+    let mut last: Option<(PointSolution, Surround)> = None;
+    let mut rounds: Vec<CompositeRound> = Vec::with_capacity(max_rounds);
+    let mut settled_rounds = false;
     for _ in 0..max_rounds {
         let (residual, _) = mg.residual_norm(top);
         let coarse = &mg.levels[top];
@@ -166,10 +165,11 @@ pub fn solve_composite(
             0 => Surround::new(problem, &coarse.grid, state, &patch, (pg.hx, pg.hy)),
             b => Surround::banded(problem, &coarse.grid, state, (&pg, corner), b),
         });
+        let previous = last.as_ref().map(|(s, _)| s);
         let start = Start {
             grid: pg,
             level: spec.cells_level,
-            p: previous.as_ref().map_or_else(
+            p: previous.map_or_else(
                 || pg.sample(|x, y| surround.pressure(x, y)),
                 |s| s.p.clone(),
             ),
@@ -182,25 +182,23 @@ pub fn solve_composite(
             problem,
             (&patch_params, Some(&surround)),
             Some(&start),
-            None,
+            Some(&mut *observe),
         )?;
-        let round = round_outputs(
-            problem,
-            (coarse, corner),
-            (&sol, &outside),
-            previous.as_ref(),
-        );
-        out.push(CompositeRound {
+        let round = round_outputs(problem, (coarse, corner), (&sol, &outside), previous);
+        rounds.push(CompositeRound {
             delta: mg.delta,
             residual,
             seconds: began.elapsed().as_secs_f64(),
             ..round
         });
-        if settled(&out, tolerance) {
-            if polishing {
-                break;
-            }
+        let done = settled(&rounds, tolerance) && polishing;
+        if settled(&rounds, tolerance) {
             polishing = true;
+        }
+        if done {
+            last = Some((sol, outside));
+            settled_rounds = true;
+            break;
         }
         // The patch as a level (its film from its own pressure and the surroundings'),
         // restricted, and carried into the whole-domain level.
@@ -215,19 +213,163 @@ pub fn solve_composite(
             (corner, spec.margin),
             (&model, &geometry),
         );
-        previous = Some(sol);
+        last = Some((sol, outside));
         if !polishing {
             mg.cycle(top);
         } else {
             let known = Known::default();
             let how = How::from_converged(&wide, &known);
-            if converge_level(&mut mg, top, &wide, &how, &mut tally, &mut observe).is_none() {
+            if converge_level(&mut mg, top, &wide, &how, &mut tally, observe).is_none() {
                 return Err(tally.not_converged(&wide));
             }
         }
     }
-    Ok(out)
+    let (patch_solution, outside) = last.expect("at least one round");
+    mg.refresh(top);
+    let level = &mg.levels[top];
+    Ok(Run {
+        rounds,
+        settled: settled_rounds,
+        grid: level.grid,
+        p: level.p.clone(),
+        h: level.h.clone(),
+        delta: mg.delta,
+        load_error: (level.load_defect() / LOAD).abs(),
+        patch: patch_solution,
+        outside,
+        tally,
+        method,
+    })
 }
+
+/// The product's composite solve (`Params::patch`; `repro solve --patch inlet`): the
+/// composite at `params.level`, cold, and its error estimate over the composites at the
+/// [`super::AccuracyParams::error_levels`] levels below, on one rectangle (on the coarsest's
+/// grid lines) whose patch is one level coarser with each, so that the meshes halve together
+/// (case 150's composites converge at order 1.96, docs/ACCURACY_NOTES.md). The solution's
+/// fields are the whole-domain level's; its film and friction the composite's; no
+/// refinement. Not converged where the rounds do not settle.
+pub(super) fn solve_point(
+    problem: &Problem,
+    params: &Params,
+    spec: &PatchSpec,
+    observer: Option<&mut dyn FnMut(&Progress)>,
+) -> Result<PointSolution, SolveError> {
+    let clock = Instant::now();
+    let mut observe = super::observing(observer);
+    // The levels below as far as the patch keeps a grid of its own (level 3).
+    let levels = params
+        .accuracy
+        .error_levels
+        .min(spec.cells_level.saturating_sub(MIN_LEVEL));
+    let coarsest = params.level - levels;
+    let (rect, _) = PatchSpec {
+        cells_level: spec.cells_level - levels,
+        ..*spec
+    }
+    .rectangle(&params.domain, coarsest);
+    let at = |level: u32| PatchSpec {
+        x_start: rect.x_start,
+        cells_level: spec.cells_level + level - params.level,
+        ..*spec
+    };
+    let top = run(problem, params, &at(params.level), MAX_ROUNDS, &mut observe)?;
+    if !top.settled {
+        return Err(top.tally.not_converged(params));
+    }
+    let values = |r: &Run, level: u32| {
+        let last = r.rounds.last().expect("a round");
+        LevelValues {
+            level,
+            h_central: last.h_central,
+            h_min: last.h_min,
+            mu_bar_sliding: last.mu_bar_sliding,
+            mu_bar_total: last.mu_bar_total,
+        }
+    };
+    let errors = (levels > 0).then(|| {
+        let ladder = Instant::now();
+        let mut below = Vec::new();
+        let mut stopped = None;
+        for level in coarsest..params.level {
+            let coarser = Params {
+                level,
+                ..params.clone()
+            };
+            match run(problem, &coarser, &at(level), MAX_ROUNDS, &mut observe) {
+                Ok(r) if r.settled => below.push(values(&r, level)),
+                _ => {
+                    below.clear();
+                    stopped = Some(LadderStop::NotConverged { level });
+                }
+            }
+        }
+        below.push(values(&top, params.level));
+        OutputErrors {
+            levels: below,
+            seconds: ladder.elapsed().as_secs_f64(),
+            stopped,
+        }
+    });
+    let last = top.rounds.last().expect("a round");
+    let g = &problem.groups;
+    if params.accuracy.require_positive_film && last.h_min <= 0.0 {
+        return Err(SolveError::FilmCollapse {
+            h_min: last.h_min,
+            level: params.level,
+            level_needed: Some(super::level_to_resolve(problem, params.level, last.h_min)),
+            finest_level: MAX_LEVEL,
+            cycle: top.tally.cycles,
+            residual_history: top.tally.history,
+        });
+    }
+    let limit = LOADED_FILM_FACTOR * last.h_central;
+    let patch_friction = top.patch.friction;
+    let (outside_sliding, outside_rolling) =
+        top.outside
+            .outside_friction(problem, limit, patch_friction.rolling.is_some());
+    let friction = Friction {
+        sliding: patch_friction.sliding + outside_sliding,
+        rolling: patch_friction
+            .rolling
+            .map(|r| r + outside_rolling.unwrap_or(0.0)),
+    };
+    let film = Film {
+        h_central: last.h_central,
+        h_min: last.h_min,
+        hc_moes: last.hc_moes,
+        hmin_moes: last.hmin_moes,
+    };
+    debug_assert!((film.hc_moes - film.h_central * g.moes_film_scale).abs() < 1e-9);
+    Ok(PointSolution {
+        grid: top.grid,
+        p: top.p,
+        h: top.h,
+        delta: top.delta,
+        film,
+        friction,
+        friction_region: params.friction.region,
+        info: Info {
+            level: params.level,
+            method: top.method,
+            cycles: top.tally.cycles,
+            newton_steps: top.tally.work.newton_steps,
+            krylov_iterations: top.tally.work.krylov_iterations,
+            residual_history: top.tally.history,
+            load_error: top.load_error,
+            seconds: clock.elapsed().as_secs_f64(),
+            start: StartKind::Cold,
+        },
+        errors,
+        coarser: Vec::new(),
+        surroundings: None,
+        patch: Some((top.patch.grid.domain(), top.patch.grid.hx)),
+    })
+}
+
+/// Most rounds of a composite solve: case 150 settled in 3-9 (level 6: 7 of single cycles
+/// and 2 converged), M 5 000, L 1 in 7.
+const MAX_ROUNDS: usize = 16;
 
 /// Whether the last two rounds' central film and friction agree within `tolerance`.
 fn settled(rounds: &[CompositeRound], tolerance: f64) -> bool {
@@ -263,10 +405,19 @@ fn round_outputs(
         .fold(f64::INFINITY, f64::min);
     let scale = problem.groups.moes_film_scale;
     let limit = LOADED_FILM_FACTOR * hc;
+    let rolling = sol.friction.rolling.is_some();
+    let (outside_sliding, outside_rolling) = outside.outside_friction(problem, limit, rolling);
+    let sliding = sol.friction.sliding + outside_sliding;
+    let h_min = sol.film.h_min.min(outside_min);
     CompositeRound {
         hc_moes: hc * scale,
-        hmin_moes: sol.film.h_min.min(outside_min) * scale,
-        mu_bar_sliding: sol.friction.sliding + outside.outside_sliding(problem, limit),
+        h_central: hc,
+        h_min,
+        hmin_moes: h_min * scale,
+        mu_bar_sliding: sliding,
+        mu_bar_total: sliding
+            + sol.friction.rolling.unwrap_or(0.0)
+            + outside_rolling.unwrap_or(0.0),
         delta: sol.delta,
         patch_change: previous.map_or(0.0, |q| {
             q.p.iter()
@@ -319,51 +470,4 @@ fn carry_into(
     level.load_correction = fine.grid.integrate(&fine.p) - sg.integrate(&under);
     level.rg = -(level.load - level.load_correction);
     level.invalidate();
-}
-
-/// The composite's outputs at `params.level` (its last round) and the Richardson estimates
-/// of its central film and sliding friction ([`richardson::estimate`], Moes units and
-/// `mu-bar`) over the composites at the `levels` levels below: the same rectangle (on the
-/// coarsest one's grid lines), its patch one level coarser with each, so that the meshes
-/// halve together (docs/ACCURACY_NOTES.md: case 150's composites converge at order 1.96).
-pub fn solve_composite_estimated(
-    problem: &Problem,
-    params: &Params,
-    spec: &PatchSpec,
-    (levels, max_rounds): (u32, usize),
-) -> Result<(CompositeRound, [Option<ErrorEstimate>; 2]), SolveError> {
-    let coarsest = params.level.saturating_sub(levels);
-    let drop = params.level - coarsest;
-    if spec.cells_level < drop {
-        return Err(SolveError::InvalidParams(
-            "the patch must have cells at the coarsest level of the estimate".into(),
-        ));
-    }
-    let (rect, _) = PatchSpec {
-        cells_level: spec.cells_level - drop,
-        ..*spec
-    }
-    .rectangle(&params.domain, coarsest);
-    let mut runs = Vec::new();
-    for level in coarsest..=params.level {
-        let at = PatchSpec {
-            x_start: rect.x_start,
-            cells_level: spec.cells_level + level - params.level,
-            ..*spec
-        };
-        let rounds = solve_composite(
-            problem,
-            &Params {
-                level,
-                ..params.clone()
-            },
-            &at,
-            max_rounds,
-        )?;
-        runs.push(rounds.last().cloned().expect("at least one round"));
-    }
-    let hc: Vec<f64> = runs.iter().map(|r| r.hc_moes).collect();
-    let mu: Vec<f64> = runs.iter().map(|r| r.mu_bar_sliding).collect();
-    let last = runs.pop().expect("the composite at the level itself");
-    Ok((last, [richardson::estimate(&hc), richardson::estimate(&mu)]))
 }

@@ -29,6 +29,7 @@ mod multigrid;
 pub mod nested;
 mod newton;
 mod params;
+mod patch;
 mod refine;
 mod relax;
 mod sequence;
@@ -38,7 +39,7 @@ mod warm;
 
 use crate::physics::case::Problem;
 use crate::physics::film::hc_nijenbanning;
-use crate::solver::grid::Grid;
+use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{
     Film, Friction, Info, Method, OutputErrors, Progress, SolveError, StartKind,
 };
@@ -95,6 +96,9 @@ pub struct PointSolution {
     /// The case-sized domain's solution around a chain of nested domains ([`chain`]), whose
     /// innermost grid this is; a related case starts from it.
     pub surroundings: Option<Box<PointSolution>>,
+    /// The patch of a composite grid ([`Params::patch`]): its rectangle and mesh; the fields
+    /// above are the whole domain's.
+    pub patch: Option<(Domain, f64)>,
 }
 
 /// The level estimated to resolve the film of `problem` whose minimum film came out as
@@ -154,10 +158,22 @@ fn solve_any(
     start: Option<&Start>,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
+    if let Some(spec) = &params.patch {
+        return composite::solve_point(problem, params, spec, observer);
+    }
     if params.nested && !chain::rectangles(&params.domain).is_empty() {
         return chain::solve_point(problem, params, start, observer);
     }
     solve_with(problem, (params, None), start, observer)
+}
+
+/// `observer` as a closure that hears every step, or none where there is no observer.
+fn observing<'a>(mut observer: Option<&'a mut dyn FnMut(&Progress)>) -> impl FnMut(&Progress) + 'a {
+    move |p| {
+        if let Some(o) = observer.as_mut() {
+            o(p)
+        }
+    }
 }
 
 /// What converged the top level: its cycles, history and Newton work, and its method.
@@ -173,7 +189,7 @@ fn solve_with(
     problem: &Problem,
     (params, surround): (&Params, Option<&Arc<Surround>>),
     warm_start: Option<&Start>,
-    mut observer: Option<&mut dyn FnMut(&Progress)>,
+    observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
     let start = Instant::now();
     if !(MIN_LEVEL..=MAX_LEVEL).contains(&params.level) {
@@ -194,11 +210,7 @@ fn solve_with(
         clamped
     };
     let g = &problem.groups;
-    let mut observe = |p: &Progress| {
-        if let Some(obs) = observer.as_mut() {
-            obs(p)
-        }
-    };
+    let mut observe = observing(observer);
     // A warm start that fits converges on its own level (a base refined to a finer level
     // takes the member there, with the refinements it has left); where it fails, the cold
     // solve from the Hertzian pressure, its attempt kept in the history.
@@ -341,5 +353,6 @@ fn solve_with(
         errors,
         coarser,
         surroundings: None,
+        patch: None,
     })
 }

@@ -36,6 +36,10 @@ pub struct Params {
     /// ([`Params::for_problem`]); a domain without any (an expert's `--domain`, Fig. 6's
     /// paper setup) is solved alone.
     pub nested: bool,
+    /// Solve on a composite grid: the domain at `level` and this patch of it at half its mesh,
+    /// coupled both ways (`composite`; `repro solve --patch inlet`, an expert's
+    /// option: not the rule's, which stays within issue 39's cost). Default none.
+    pub patch: Option<super::patch::PatchSpec>,
     /// The multigrid cycles (`cycles`, `multigrid`).
     pub multigrid: MultigridParams,
     /// When a level is converged (`stopping`, and the Newton-Krylov finish).
@@ -57,6 +61,7 @@ impl Default for Params {
             domain: Domain::default(),
             edge: Edge::Zero,
             nested: false,
+            patch: None,
             multigrid: MultigridParams::default(),
             stopping: StoppingParams::default(),
             newton: NewtonParams::default(),
