@@ -97,7 +97,10 @@ fn converge_rung(
         None => inject(mg, k),
     }
     mg.make_top(k);
-    // A converged start's outputs and residual stop its cycles as a warm start's do.
+    // A converged start's outputs and residual stop its cycles as a warm start's do; its
+    // outputs are read from the film of its own pressure (the level's film and coefficients
+    // were those of its last visit as a coarse grid).
+    mg.refresh(k);
     let known = Known {
         start: warm.and_then(|w| {
             Some(WarmStop {

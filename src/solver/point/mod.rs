@@ -63,7 +63,7 @@ pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
 /// can move a result.
-pub const SOLVER_REVISION: &str = "point-23";
+pub const SOLVER_REVISION: &str = "point-24";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;

@@ -247,9 +247,9 @@ pub struct AccuracyParams {
     /// [`AccuracyParams::error_levels`]).
     /// Default none (studies of the numerics solve the level they are given); the rule sets 1 %
     /// in friction ([`super::AccuracyTarget::FRICTION`]), which takes 448 of the paper's 1 369
-    /// solves to level 8 and 929 of the 980 rows of Figs. 1 and 3-7 within 1 %, at 1.43 times
-    /// its CPU time and 1.42 times its wall time (docs/ACCURACY_NOTES.md, "Refinement to a
-    /// target").
+    /// solves to level 8 and 929 of the 980 rows of Figs. 1 and 3-7 within 1 %, at 1.43-1.50
+    /// times its CPU time and 1.42-1.49 times its wall time, two sessions' measurements
+    /// (docs/ACCURACY_NOTES.md, "Refinement to a target").
     pub target: Option<super::AccuracyTarget>,
     /// Finer levels the solver may add, one at a time, while the converged film is not
     /// positive (friction is never computed on a closed gap) or the outputs' estimated error
