@@ -1,7 +1,7 @@
-//! A composite grid (issue 39, prototype; not the rule's): the whole domain at level `L` and
-//! one patch of it at half its mesh, coupled both ways as in Brandt's multilevel adaptive
-//! technique and the fast adaptive composite-grid method (docs/ACCURACY_NOTES.md, "Composite
-//! grid").
+//! A composite grid (issue 39; [`Params::patch`], an expert's option, not the rule's, whose
+//! cost budget it would exceed): the whole domain at level `L` and one patch of it at half its
+//! mesh, coupled both ways as in Brandt's multilevel adaptive technique and the fast adaptive
+//! composite-grid method (docs/ACCURACY_NOTES.md, "Composite grid").
 //!
 //! A round solves the patch inside the whole-domain level (its edge pressure, by bicubic
 //! interpolation, and the deformation by the pressure outside it, [`Surround::banded`]) with
@@ -9,10 +9,11 @@
 //! at the coarse nodes inside the patch the whole-domain level takes the restricted patch
 //! pressure, the FAS forcing of its Reynolds equation (`f = R(r_P) + L_L(R P_P)`, the relative
 //! truncation error), the film-equation offset that reproduces the patch's film there, and
-//! the patch's load less its own over the patch in its force balance; then it is converged
-//! again. At the fixed point the whole-domain solution carries the patch's accuracy outside
-//! the patch too: a patch over the inlet, where a heavy contact's central film is formed,
-//! gives the central film of the uniform grid one level finer.
+//! the patch's load less its own over the patch in its force balance; then it takes one
+//! cycle (where its cycles converged it) or a converged solve (where they did not, and once
+//! the outputs settle). At the fixed point the whole-domain solution carries the patch's
+//! accuracy outside the patch too: a patch over the inlet, where a heavy contact's central
+//! film is formed, gives the central film of the uniform grid one level finer.
 //!
 //! The whole-domain level keeps its edge (the fitted far field refits its amplitude in its
 //! converged rounds; the patch's load correction survives it, [`LevelFields::load_correction`]).
