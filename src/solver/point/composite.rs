@@ -50,9 +50,8 @@ pub struct CompositeRound {
     pub hmin_moes: f64,
     /// Sliding `mu-bar`: the patch's loaded film plus the whole-domain level's outside it.
     pub mu_bar_sliding: f64,
-    /// Sliding plus rolling `mu-bar` likewise (the sliding part where rolling is not
-    /// computed).
-    pub mu_bar_total: f64,
+    /// Rolling `mu-bar` likewise, where it is computed.
+    pub mu_bar_rolling: Option<f64>,
     /// The film constant.
     pub delta: f64,
     /// The largest change of the patch pressure from the round before (0 in the first).
@@ -78,7 +77,7 @@ pub fn solve_composite(
 }
 
 /// A composite solve: its rounds, whether they settled, the whole-domain level's last state,
-/// the last patch solution with its surroundings, and the whole-domain level's tallies.
+/// the last patch solution, and the whole-domain level's tallies.
 struct Run {
     rounds: Vec<CompositeRound>,
     settled: bool,
@@ -88,7 +87,6 @@ struct Run {
     delta: f64,
     load_error: f64,
     patch: PointSolution,
-    outside: Surround,
     tally: Tally,
     method: Method,
 }
@@ -154,7 +152,7 @@ fn run(
     let model = mg.model;
     // The film equation's right-hand side of the top level as it is, outside the patch.
     let geometry = mg.levels[top].hrhs.clone();
-    let mut last: Option<(PointSolution, Surround)> = None;
+    let mut last: Option<PointSolution> = None;
     let mut rounds: Vec<CompositeRound> = Vec::with_capacity(max_rounds);
     let mut settled_rounds = false;
     for _ in 0..max_rounds {
@@ -166,7 +164,7 @@ fn run(
             0 => Surround::new(problem, &coarse.grid, state, &patch, (pg.hx, pg.hy)),
             b => Surround::banded(problem, &coarse.grid, state, (&pg, corner), b),
         });
-        let previous = last.as_ref().map(|(s, _)| s);
+        let previous = last.as_ref();
         let start = Start {
             grid: pg,
             level: spec.cells_level,
@@ -197,7 +195,7 @@ fn run(
             polishing = true;
         }
         if done {
-            last = Some((sol, outside));
+            last = Some(sol);
             settled_rounds = true;
             break;
         }
@@ -214,7 +212,7 @@ fn run(
             (corner, spec.margin),
             (&model, &geometry),
         );
-        last = Some((sol, outside));
+        last = Some(sol);
         if !polishing {
             mg.cycle(top);
         } else {
@@ -225,7 +223,7 @@ fn run(
             }
         }
     }
-    let (patch_solution, outside) = last.expect("at least one round");
+    let patch_solution = last.expect("at least one round");
     mg.refresh(top);
     let level = &mg.levels[top];
     Ok(Run {
@@ -237,7 +235,6 @@ fn run(
         delta: mg.delta,
         load_error: (level.load_defect() / LOAD).abs(),
         patch: patch_solution,
-        outside,
         tally,
         method,
     })
@@ -278,6 +275,18 @@ pub(super) fn solve_point(
     if !top.settled {
         return Err(top.tally.not_converged(params));
     }
+    // A closed film is refused before the estimate is paid for.
+    let last = top.rounds.last().expect("a round");
+    if params.accuracy.require_positive_film && last.h_min <= 0.0 {
+        return Err(SolveError::FilmCollapse {
+            h_min: last.h_min,
+            level: params.level,
+            level_needed: Some(super::level_to_resolve(problem, params.level, last.h_min)),
+            finest_level: MAX_LEVEL,
+            cycle: top.tally.cycles,
+            residual_history: top.tally.history,
+        });
+    }
     let values = |r: &Run, level: u32| {
         let last = r.rounds.last().expect("a round");
         LevelValues {
@@ -285,7 +294,7 @@ pub(super) fn solve_point(
             h_central: last.h_central,
             h_min: last.h_min,
             mu_bar_sliding: last.mu_bar_sliding,
-            mu_bar_total: last.mu_bar_total,
+            mu_bar_total: last.mu_bar_sliding + last.mu_bar_rolling.unwrap_or(0.0),
         }
     };
     let errors = (levels > 0).then(|| {
@@ -312,28 +321,9 @@ pub(super) fn solve_point(
             stopped,
         }
     });
-    let last = top.rounds.last().expect("a round");
-    let g = &problem.groups;
-    if params.accuracy.require_positive_film && last.h_min <= 0.0 {
-        return Err(SolveError::FilmCollapse {
-            h_min: last.h_min,
-            level: params.level,
-            level_needed: Some(super::level_to_resolve(problem, params.level, last.h_min)),
-            finest_level: MAX_LEVEL,
-            cycle: top.tally.cycles,
-            residual_history: top.tally.history,
-        });
-    }
-    let limit = LOADED_FILM_FACTOR * last.h_central;
-    let patch_friction = top.patch.friction;
-    let (outside_sliding, outside_rolling) =
-        top.outside
-            .outside_friction(problem, limit, patch_friction.rolling.is_some());
     let friction = Friction {
-        sliding: patch_friction.sliding + outside_sliding,
-        rolling: patch_friction
-            .rolling
-            .map(|r| r + outside_rolling.unwrap_or(0.0)),
+        sliding: last.mu_bar_sliding,
+        rolling: last.mu_bar_rolling,
     };
     let film = Film {
         h_central: last.h_central,
@@ -341,7 +331,6 @@ pub(super) fn solve_point(
         hc_moes: last.hc_moes,
         hmin_moes: last.hmin_moes,
     };
-    debug_assert!((film.hc_moes - film.h_central * g.moes_film_scale).abs() < 1e-9);
     Ok(PointSolution {
         grid: top.grid,
         p: top.p,
@@ -416,9 +405,10 @@ fn round_outputs(
         h_min,
         hmin_moes: h_min * scale,
         mu_bar_sliding: sliding,
-        mu_bar_total: sliding
-            + sol.friction.rolling.unwrap_or(0.0)
-            + outside_rolling.unwrap_or(0.0),
+        mu_bar_rolling: sol
+            .friction
+            .rolling
+            .map(|r| r + outside_rolling.unwrap_or(0.0)),
         delta: sol.delta,
         patch_change: previous.map_or(0.0, |q| {
             q.p.iter()
