@@ -25,16 +25,11 @@ fn main() {
     let rounds: usize = a[5].parse().unwrap();
     let margin: usize = a.get(6).map_or(1, |m| m.parse().unwrap());
     let band: usize = a.get(7).map_or(8, |m| m.parse().unwrap());
-    let mut params = Params::for_problem(&problem, level);
+    let mut params = Params::for_problem(&problem, level).level_alone();
     // PROBE_EDGE_ZERO: the P = 0 edge instead of the rule's far field.
     if std::env::var_os("PROBE_EDGE_ZERO").is_some() {
         params.edge = Edge::Zero;
     }
-    params.nested = false;
-    params.accuracy.error_levels = 0;
-    params.accuracy.target = None;
-    params.accuracy.refinement_levels = 0;
-    params.accuracy.require_positive_film = false;
     // PROBE_OUTTOL: the cycles' output tolerance (the rounds converge to about it).
     if let Some(t) = std::env::var_os("PROBE_OUTTOL") {
         params.stopping.output_tolerance = t.to_str().unwrap().parse().unwrap();

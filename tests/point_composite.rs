@@ -10,14 +10,10 @@ use repro::solver::point::{solve, Edge, Params};
 /// The rule's domain and parameters at `level` with the `P = 0` edge (the prototype's), no
 /// error estimate and no refinement.
 fn uniform_params(problem: &Problem, level: u32) -> Params {
-    let mut params = Params::for_problem(problem, level);
-    params.edge = Edge::Zero;
-    params.nested = false;
-    params.accuracy.error_levels = 0;
-    params.accuracy.target = None;
-    params.accuracy.refinement_levels = 0;
-    params.accuracy.require_positive_film = false;
-    params
+    Params {
+        edge: Edge::Zero,
+        ..Params::for_problem(problem, level).level_alone()
+    }
 }
 
 #[test]

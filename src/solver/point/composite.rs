@@ -112,14 +112,8 @@ fn run(
             params.level, spec.cells_level, spec.margin
         )));
     }
-    let mut wide = params.clone();
+    let mut wide = params.clone().level_alone();
     wide.multigrid.coarsest_level = params.multigrid.coarsest_level.min(params.level);
-    wide.nested = false;
-    wide.patch = None;
-    wide.accuracy.error_levels = 0;
-    wide.accuracy.target = None;
-    wide.accuracy.refinement_levels = 0;
-    wide.accuracy.require_positive_film = false;
     let (patch, corner) = spec.rectangle(&params.domain, params.level);
     // `Delta` is the whole domain's: the patch relaxes no force balance of its own (with its
     // own balance and its edge in a heavy contact, the patch moved `Delta` by twice the film)
@@ -159,11 +153,25 @@ fn run(
         let (residual, _) = mg.residual_norm(top);
         let coarse = &mg.levels[top];
         let state = (&coarse.p[..], &coarse.h[..], mg.delta);
-        let outside = Surround::new(problem, &coarse.grid, state, &patch, (pg.hx, pg.hy));
-        let surround = Arc::new(match spec.band {
-            0 => Surround::new(problem, &coarse.grid, state, &patch, (pg.hx, pg.hy)),
-            b => Surround::banded(problem, &coarse.grid, state, (&pg, corner), b),
-        });
+        // The split of the friction and film outside the patch; without a band also the
+        // patch's surroundings.
+        let outside = Arc::new(Surround::new(
+            problem,
+            &coarse.grid,
+            state,
+            &patch,
+            (pg.hx, pg.hy),
+        ));
+        let surround = match spec.band {
+            0 => Arc::clone(&outside),
+            b => Arc::new(Surround::banded(
+                problem,
+                &coarse.grid,
+                state,
+                (&pg, corner),
+                b,
+            )),
+        };
         let previous = last.as_ref();
         let start = Start {
             grid: pg,

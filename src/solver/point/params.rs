@@ -279,6 +279,19 @@ impl Default for AccuracyParams {
 const KRYLOV_RESTART: usize = 60;
 
 impl Params {
+    /// These parameters solving their level alone, on one grid: no nested domains, no patch,
+    /// no error estimate, no refinement (nor its target) and no film check. The composite
+    /// grid's levels, and the studies that compare it with uniform levels.
+    pub fn level_alone(mut self) -> Self {
+        self.nested = false;
+        self.patch = None;
+        self.accuracy.error_levels = 0;
+        self.accuracy.target = None;
+        self.accuracy.refinement_levels = 0;
+        self.accuracy.require_positive_film = false;
+        self
+    }
+
     /// Default parameters at `level`, on the paper's domain whatever the case: for tests and
     /// studies of the numerics. A case is solved with [`Params::for_problem`].
     pub fn at_level(level: u32) -> Self {
