@@ -176,7 +176,7 @@ pub fn to_text(studies: &[AccuracyResult], recs: &[Recommendation]) -> String {
             r.target,
             r.level
                 .map(|l| l.to_string())
-                .unwrap_or_else(|| "none of those run".into()),
+                .unwrap_or_else(|| "none shown by the levels run".into()),
             r.case,
             r.mu_error
                 .map(|e| format!(", error {:.2} %", 100.0 * e))

@@ -190,8 +190,12 @@ impl AccuracyResult {
 
     /// The cheapest level whose `mu-bar` error is within `tol`, and that of every finer level
     /// too (a level that is right by chance between two wrong ones is not a choice). `None`
-    /// when no level qualifies.
+    /// when no level qualifies, and when the reference is the finest level itself (one
+    /// converged level: its error of zero is not an estimate).
     pub fn cheapest_within(&self, tol: f64) -> Option<&LevelRun> {
+        if self.reference.is_none_or(|r| r.kind == "finest") {
+            return None;
+        }
         let mut best = None;
         for run in self.levels.iter().rev() {
             match self.errors(run) {
@@ -407,6 +411,22 @@ pub(crate) mod tests {
         let recs = recommend(&[s], 0.01);
         assert_eq!(recs.len(), 1);
         assert_eq!((recs[0].target, recs[0].level), ("fig3", Some(6)));
+    }
+
+    #[test]
+    fn a_case_with_one_converged_level_qualifies_no_level() {
+        // The heavy-m19205 study: levels 4-7 close the film, level 8 alone converges; its
+        // reference is itself, so the error of 0 it prints is no evidence, and the target
+        // it stands for gets no level rather than level 8 at "0 %".
+        let mut levels = vec![run(6, 1.0, 25.0), run(7, 1.0, 25.0), run(8, 1.4e-3, 25.1)];
+        for l in &mut levels[..2] {
+            l.outcome = Err(SolveError::InvalidParams("closed".into()));
+        }
+        let s = study(levels);
+        assert_eq!(s.reference.map(|r| r.kind), Some("finest"));
+        assert!(s.cheapest_within(0.01).is_none());
+        let recs = recommend(&[s], 0.01);
+        assert_eq!((recs[0].case, recs[0].level), ("t", None));
     }
 
     #[test]

@@ -1,9 +1,10 @@
-//! A chain of nested domains (issue 39, prototype; not yet the rule's): the case-sized domain,
-//! then rectangles each about a third of the one around it, down to the contact's core, every
-//! one solved at the same level inside the solution around it ([`super::nested`]). The
-//! outputs are the innermost grid's film and the friction summed over the chain; their error
-//! is estimated by Richardson over the whole chain at two coarser levels, whose meshes halve
-//! together, so that the surroundings' own error is part of it (docs/ACCURACY_NOTES.md, "Resolution where the contact needs it").
+//! A chain of nested domains (the rule's for the light contacts, [`Params::for_problem`]): the
+//! case-sized domain, then rectangles each about a third of the one around it, down to the
+//! contact's core, every one solved at the same level inside the solution around it
+//! ([`super::nested`]). The outputs are the innermost grid's film and the friction summed over
+//! the chain; their error is estimated by Richardson over the whole chain at two coarser
+//! levels, whose meshes halve together, so that the surroundings' own error is part of it
+//! (docs/ACCURACY_NOTES.md, "Resolution where the contact needs it").
 
 use super::nested::Surround;
 use super::{solve_with, Params, PointSolution, Start, LOADED_FILM_FACTOR};
