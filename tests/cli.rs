@@ -24,7 +24,7 @@ fn solve_json_has_every_documented_key() {
 
 /// A light contact whose case-sized domain reaches beyond three times the core is solved on
 /// nested domains, and `--json` says which (M 5, L 10: `-12.5..7 x 12.5`, innermost the core
-/// `-1.6..1.0 x 1.3` pushed out onto its surroundings' grid lines); a mid-range one is not.
+/// `-1.6..1.3 x 1.3` pushed out onto its surroundings' grid lines); a mid-range one is not.
 #[test]
 fn solve_json_names_the_nested_domains() {
     let (code, out, err) = repro(&[

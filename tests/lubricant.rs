@@ -99,7 +99,7 @@ fn predict_iso_vg_68_at_80_c_gives_eta0_by_d341_and_alpha_and_mu_with_bands() {
     assert!(mu_lo <= mu && mu < mu_hi, "{mu_lo} {mu} {mu_hi}");
     let (h_lo, h_hi) = pair(&v, "hc_m_band");
     assert!(h_lo <= num(&v, &["hc_m"]) && num(&v, &["hc_m"]) < h_hi);
-    // The refined formula's band holds its own 4.8 % and the alpha band's range.
+    // The refined formula's band holds its own 5.1 % and the alpha band's range.
     let r = num(&v, &["mu_bar_refined"]);
     let (r_lo, r_hi) = pair(&v, "mu_bar_refined_band");
     assert!(

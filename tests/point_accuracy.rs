@@ -311,6 +311,29 @@ fn the_error_estimate_brackets_level_9_on_a_light_contact() {
 }
 
 #[test]
+fn a_light_member_at_small_slip_converges_on_its_nested_domains() {
+    // Fig. 6 case 19 (case 23 at S 0.1 %, tau0 4 MPa): with the core's outlet edge at X = 1.0,
+    // inside its pressurised outlet (cavitation at X = 1.16), the innermost rectangle did not
+    // converge and the case fell back to its case-sized domain, friction estimated 6.4 % off
+    // at level 7 (about 14 % at level 6 by its order 1.16). On the chain, level 6 is 1.8 %
+    // off by its estimate (order 1.31): 3 % separates the two with room either way.
+    let c = physical("5p4e", 40.0, 1e9, 12.0, 0.001, 4e6, 1.0);
+    let p = problem(&c);
+    let s = solve(&p, &Params::for_problem(&p, 6), None).expect("case 19 at level 6");
+    assert!(s.surroundings.is_some(), "solved on its nested domains");
+    let e = s.errors.as_ref().expect("an error estimate");
+    let mu = e
+        .estimate(Output::MuBarSliding)
+        .expect("a friction estimate");
+    assert!(
+        mu.relative(s.friction.sliding) < 0.03,
+        "mu-bar {} +- {:.2} %",
+        s.friction.sliding,
+        100.0 * mu.relative(s.friction.sliding)
+    );
+}
+
+#[test]
 fn the_error_estimate_brackets_level_9_on_the_table_4_case() {
     // The Appendix case (M 1 739, L 14.8): the middle of the envelope.
     let c = Table4Case::shipped().unwrap().case;
