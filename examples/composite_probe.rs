@@ -81,7 +81,7 @@ fn main() {
                     n + 1,
                     r.hc_moes,
                     r.hmin_moes,
-                    r.mu_bar_sliding,
+                    r.friction.sliding,
                     r.delta,
                     r.patch_change,
                     r.residual,

@@ -99,14 +99,9 @@ impl Chain {
     pub fn friction(&self, problem: &Problem) -> Friction {
         let inner = self.innermost();
         let limit = LOADED_FILM_FACTOR * inner.film.h_central;
-        let rolling = inner.friction.rolling.is_some();
-        self.surrounds.iter().fold(inner.friction, |f, s| {
-            let (sliding, outside_rolling) = s.outside_friction(problem, limit, rolling);
-            Friction {
-                sliding: f.sliding + sliding,
-                rolling: f.rolling.map(|r| r + outside_rolling.unwrap_or(0.0)),
-            }
-        })
+        self.surrounds
+            .iter()
+            .fold(inner.friction, |f, s| s.plus_outside(problem, limit, f))
     }
 
     /// The chain's values for the error estimate, in the solver's units.

@@ -48,10 +48,9 @@ pub struct CompositeRound {
     pub h_min: f64,
     /// The smaller of the patch's minimum film and the whole-domain level's outside it (Moes).
     pub hmin_moes: f64,
-    /// Sliding `mu-bar`: the patch's loaded film plus the whole-domain level's outside it.
-    pub mu_bar_sliding: f64,
-    /// Rolling `mu-bar` likewise, where it is computed.
-    pub mu_bar_rolling: Option<f64>,
+    /// `mu-bar`: the patch's loaded film plus the whole-domain level's outside it (rolling
+    /// where it is computed).
+    pub friction: Friction,
     /// The film constant.
     pub delta: f64,
     /// The largest change of the patch pressure from the round before (0 in the first).
@@ -301,8 +300,8 @@ pub(super) fn solve_point(
             level,
             h_central: last.h_central,
             h_min: last.h_min,
-            mu_bar_sliding: last.mu_bar_sliding,
-            mu_bar_total: last.mu_bar_sliding + last.mu_bar_rolling.unwrap_or(0.0),
+            mu_bar_sliding: last.friction.sliding,
+            mu_bar_total: last.friction.total(),
         }
     };
     let errors = (levels > 0).then(|| {
@@ -329,10 +328,7 @@ pub(super) fn solve_point(
             stopped,
         }
     });
-    let friction = Friction {
-        sliding: last.mu_bar_sliding,
-        rolling: last.mu_bar_rolling,
-    };
+    let friction = last.friction;
     let film = Film {
         h_central: last.h_central,
         h_min: last.h_min,
@@ -375,7 +371,7 @@ fn settled(rounds: &[CompositeRound], tolerance: f64) -> bool {
         return false;
     };
     let close = |x: f64, y: f64| (x - y).abs() <= tolerance * y.abs();
-    close(a.hc_moes, b.hc_moes) && close(a.mu_bar_sliding, b.mu_bar_sliding)
+    close(a.hc_moes, b.hc_moes) && close(a.friction.sliding, b.friction.sliding)
 }
 
 /// A round's central and minimum film and friction from the whole-domain level `coarse`, the
@@ -402,21 +398,14 @@ fn round_outputs(
         .map(|k| coarse.h[k])
         .fold(f64::INFINITY, f64::min);
     let scale = problem.groups.moes_film_scale;
-    let limit = LOADED_FILM_FACTOR * hc;
-    let rolling = sol.friction.rolling.is_some();
-    let (outside_sliding, outside_rolling) = outside.outside_friction(problem, limit, rolling);
-    let sliding = sol.friction.sliding + outside_sliding;
+    let friction = outside.plus_outside(problem, LOADED_FILM_FACTOR * hc, sol.friction);
     let h_min = sol.film.h_min.min(outside_min);
     CompositeRound {
         hc_moes: hc * scale,
         h_central: hc,
         h_min,
         hmin_moes: h_min * scale,
-        mu_bar_sliding: sliding,
-        mu_bar_rolling: sol
-            .friction
-            .rolling
-            .map(|r| r + outside_rolling.unwrap_or(0.0)),
+        friction,
         delta: sol.delta,
         patch_change: previous.map_or(0.0, |q| {
             q.p.iter()

@@ -13,6 +13,7 @@ use crate::physics::case::Problem;
 use crate::physics::hertz::DIMENSIONLESS_LOAD as LOAD;
 use crate::solver::deformation::Deformation;
 use crate::solver::grid::{Domain, Grid};
+use crate::solver::output::Friction;
 
 /// A converged whole-domain solution as the surroundings of a nested rectangle.
 pub struct Surround {
@@ -273,6 +274,16 @@ impl Surround {
         let area = g.hx * g.hy / LOAD;
         let scale = problem.groups.rolling_stress_scale();
         (sliding * area, rolling.then_some(scale * poiseuille * area))
+    }
+
+    /// `inner`, the friction of the grid inside, plus these surroundings' outside it
+    /// ([`Surround::outside_friction`]; rolling where `inner` has it).
+    pub fn plus_outside(&self, problem: &Problem, h_limit: f64, inner: Friction) -> Friction {
+        let (sliding, rolling) = self.outside_friction(problem, h_limit, inner.rolling.is_some());
+        Friction {
+            sliding: inner.sliding + sliding,
+            rolling: inner.rolling.map(|r| r + rolling.unwrap_or(0.0)),
+        }
     }
 }
 
