@@ -5,8 +5,9 @@
 
 use crate::support::{repro, scratch};
 use repro::paper::cases::shipped_sweep;
-use repro::pipeline::cache::{Cache, Stamp};
+use repro::pipeline::cache::{key_of, Cache, Stamp};
 use repro::pipeline::job::{point_jobs, Job};
+use repro::pipeline::keys::{line_revisions, point_revisions};
 use repro::pipeline::outcome::{CaseOutcome, Failure, FailureKind};
 use repro::pipeline::shard::Shard;
 use std::collections::BTreeSet;
@@ -117,6 +118,23 @@ fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
         "{out}"
     );
 
+    // `repro cache` counts the merged entries by the revisions their keys hold, every one
+    // reached by the present build: 20 point contacts (10 and their bases), 5 line contacts.
+    let (code, out, err) = repro(&["cache", "list", "--cache", s(&merged)]);
+    assert_eq!(code, 0, "{err}");
+    let row = |revisions: &str, n: usize| {
+        out.lines().any(|l| {
+            let w: Vec<&str> = l.split_whitespace().collect();
+            l.trim_start().starts_with(revisions)
+                && w.contains(&n.to_string().as_str())
+                && l.ends_with("yes")
+        })
+    };
+    assert!(
+        row(&point_revisions(), 20) && row(&line_revisions(), 5),
+        "{out}"
+    );
+
     let offline_out = dir.join("offline-out");
     let (code, out, err) = fig7(
         &["--offline", "--cache", s(&merged), "--out", s(&offline_out)],
@@ -171,7 +189,7 @@ fn three_shards_merged_and_assembled_offline_equal_the_one_machine_run() {
         residual_history: vec![1.0],
     });
     Cache::new(&shards[0])
-        .put(&key, &other, &Stamp::now(0.0))
+        .put(&key, &other, &Stamp::now(0.0, point_revisions()))
         .expect("write");
     let (code, _, err) = repro(&["cache", "merge", s(&shards[0]), "--into", s(&merged)]);
     assert_eq!(code, 1, "{err}");
@@ -289,4 +307,36 @@ fn shards_partition_the_families_evenly() {
     };
     let s = Shard::new(2, 5).unwrap();
     assert_eq!(keys(s.select(jobs)), keys(s.select(reversed)));
+}
+
+/// `repro cache prune` removes the entries an older revision made and keeps the present
+/// build's; `--dry-run` only counts them.
+#[test]
+fn pruning_removes_what_the_present_revisions_cannot_reach() {
+    let dir = scratch("shards", "prune");
+    let cache = Cache::new(dir.join("cache"));
+    let stamp = |revisions: &str| Stamp {
+        revisions: Some(revisions.into()),
+        ..Stamp::now(1.0, String::new())
+    };
+    let (present, old) = (key_of(&"present"), key_of(&"old"));
+    cache
+        .put(&present, &vec![1.0], &stamp(&point_revisions()))
+        .unwrap();
+    cache
+        .put(&old, &vec![1.0], &stamp("point-24 thermal-3"))
+        .unwrap();
+    let at = s(cache.dir());
+    let (code, out, err) = repro(&["cache", "prune", "--dry-run", "--cache", at]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("would remove 1 files"), "{out}");
+    assert_eq!(cache.keys().unwrap().len(), 2);
+    let (code, out, err) = repro(&["cache", "prune", "--cache", at]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("removed 1 files"), "{out}");
+    assert_eq!(cache.keys().unwrap(), vec![present]);
+    let (code, _, err) = repro(&["cache", "list", "--cache", s(&dir.join("none"))]);
+    assert_eq!(code, 2, "a folder that is not there: {err}");
+    assert!(err.contains("no cache folder"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

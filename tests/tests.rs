@@ -12,6 +12,7 @@ mod point_accuracy;
 mod point_composite;
 mod point_contact;
 mod predict;
+mod revision;
 mod shards;
 mod support;
 mod text;

@@ -46,16 +46,21 @@ pub struct Stamp {
     pub host: String,
     /// Wall time of the solve, s.
     pub seconds: f64,
+    /// The solver revisions its key holds (`point-25 thermal-3`, `line-4`): what `repro
+    /// cache` sorts entries by (`None` in entries written before they were recorded).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub revisions: Option<String>,
 }
 
 impl Stamp {
-    /// The stamp of a solve of `seconds` by this build on this machine.
-    pub fn now(seconds: f64) -> Self {
+    /// The stamp of a solve of `seconds` under `revisions` by this build on this machine.
+    pub fn now(seconds: f64, revisions: String) -> Self {
         Stamp {
             repro_version: env!("CARGO_PKG_VERSION").to_string(),
             git_revision: GIT_REVISION.to_string(),
             host: host_name(),
             seconds,
+            revisions: Some(revisions),
         }
     }
 }
@@ -314,7 +319,7 @@ mod tests {
         let cache = Cache::new(temp_dir("rt"));
         let key = key_of(&("case", 7u32));
         assert!(matches!(cache.get::<Vec<f64>>(&key), Lookup::Miss));
-        let stamp = Stamp::now(0.25);
+        let stamp = Stamp::now(0.25, "point-0".into());
         cache.put(&key, &vec![1.5, -2.0], &stamp).unwrap();
         match cache.get::<Vec<f64>>(&key) {
             Lookup::Hit(v, s) => assert_eq!((v, s), (vec![1.5, -2.0], Some(stamp.clone()))),

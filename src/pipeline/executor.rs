@@ -254,7 +254,7 @@ impl<'j> Forest<'_, 'j> {
         let job = self.nodes[key];
         let clock = std::time::Instant::now();
         let (outcome, solution) = job.solve.run(start.as_deref(), true);
-        let stamp = Stamp::now(clock.elapsed().as_secs_f64());
+        let stamp = Stamp::now(clock.elapsed().as_secs_f64(), job.solve.revisions());
         let solution = solution.map(Arc::new);
         if let Some(c) = self.policy.cache() {
             if let Err(e) = c.put(&job.key, &outcome, &stamp) {

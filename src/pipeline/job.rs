@@ -4,7 +4,7 @@
 //! here for every target's contacts ([`point_jobs`], [`line_job`]).
 
 use super::base::base_of;
-use super::keys::{case_key, line_key};
+use super::keys::{case_key, line_key, line_revisions, point_revisions};
 use super::label::case_label;
 use super::outcome::{CaseOutcome, ThermalFailure};
 use crate::physics::case::Physics;
@@ -85,6 +85,14 @@ impl Solve {
                     None,
                 )
             }
+        }
+    }
+
+    /// The revisions its cache key holds ([`super::keys`]), recorded in its entry's stamp.
+    pub fn revisions(&self) -> String {
+        match self {
+            Solve::Point { .. } => point_revisions(),
+            Solve::Line { .. } => line_revisions(),
         }
     }
 

@@ -12,6 +12,22 @@ use serde::Serialize;
 /// The revision of the line-contact numerics, part of every line-contact cache key.
 pub use crate::solver::line::SOLVER_REVISION as LINE_SOLVER_REVISION;
 
+/// The revisions a point case's key holds: the point numerics' and the thermal post-process's.
+pub fn point_revisions() -> String {
+    format!("{SOLVER_REVISION} {THERMAL_REVISION}")
+}
+
+/// The revision a line contact's key holds.
+pub fn line_revisions() -> String {
+    LINE_SOLVER_REVISION.to_string()
+}
+
+/// The revisions the present build's keys hold: an entry made under any other is never
+/// answered again ([`super::prune`]).
+pub fn present_revisions() -> [String; 2] {
+    [point_revisions(), line_revisions()]
+}
+
 /// The cache key of a case at the given solver parameters: the case, the parameters a target
 /// can set (level, domain, rolling friction, the film check, and the edge and friction region
 /// where they are not the rule's), the solver revision, which is

@@ -24,8 +24,9 @@ pub struct MergeReport {
 /// compared, so that an old entry and a new one of the same result agree.
 const NOT_RESULT: &[&str] = &["seconds"];
 
-/// The payload without the [`NOT_RESULT`] fields, re-serialised (keys sorted).
-fn result_of(payload: &str) -> Option<serde_json::Value> {
+/// The payload without the [`NOT_RESULT`] fields (wall times), keys sorted: the result a
+/// payload holds, the same wherever and however fast it was computed.
+pub fn result_of(payload: &str) -> Option<serde_json::Value> {
     fn strip(v: &mut serde_json::Value) {
         match v {
             serde_json::Value::Object(m) => {
@@ -115,6 +116,7 @@ mod tests {
             git_revision: "abc".into(),
             host: host.into(),
             seconds,
+            revisions: None,
         }
     }
 

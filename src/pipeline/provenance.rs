@@ -207,6 +207,7 @@ mod tests {
             git_revision: rev.into(),
             host: host.into(),
             seconds: 1.5,
+            revisions: None,
         }
     }
 

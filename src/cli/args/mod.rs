@@ -65,7 +65,8 @@ pub enum Command {
     Accuracy(AccuracyArgs),
     /// List the targets.
     List,
-    /// The result cache: merge caches of shards or of other machines.
+    /// The result cache: what it holds per solver revision, pruning what the present
+    /// revisions cannot reach, merging caches of shards or of other machines.
     Cache(CacheArgs),
     /// Write sbatch scripts that run targets as a Slurm job array (one shard per task), then
     /// merge the shards' caches and assemble the figures in a dependent job.
@@ -81,12 +82,24 @@ pub enum Command {
 /// `repro cache ...`.
 #[derive(Debug, Args)]
 pub struct CacheArgs {
+    /// What to do (default: `list` of .repro-cache).
     #[command(subcommand)]
-    pub command: CacheCommand,
+    pub command: Option<CacheCommand>,
 }
 
 #[derive(Debug, Subcommand)]
 pub enum CacheCommand {
+    /// What the cache holds: entries and size per solver revision, and whether the present
+    /// revisions reach them (what `repro cache` alone prints).
+    ///
+    /// A cache key holds the revisions of the numerics that made its result, so an entry of
+    /// an older revision is never answered again; entries written before entries recorded
+    /// their revisions are listed as unrecorded (older than the present point revision).
+    List(CacheDirArgs),
+    /// Remove what the present revisions cannot reach: entries of other revisions,
+    /// unrecorded ones, corrupt ones and temporary files of writes that never finished
+    /// (older than an hour). What they reach stays.
+    Prune(PruneArgs),
     /// Copy the verified entries of SRC caches into DST, by content hash.
     ///
     /// An entry DST lacks is copied as it is; one DST has with the same result is counted
@@ -95,6 +108,22 @@ pub enum CacheCommand {
     /// fails verification. Exits 1 when any entry was refused, 2 when a folder cannot be read
     /// or written.
     Merge(MergeArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct CacheDirArgs {
+    /// Result cache folder.
+    #[arg(long, default_value = ".repro-cache")]
+    pub cache: PathBuf,
+}
+
+#[derive(Debug, Args)]
+pub struct PruneArgs {
+    #[command(flatten)]
+    pub dir: CacheDirArgs,
+    /// Say what would be removed, removing nothing.
+    #[arg(long)]
+    pub dry_run: bool,
 }
 
 #[derive(Debug, Args)]

@@ -61,9 +61,10 @@ use std::sync::Arc;
 use std::time::Instant;
 pub use warm::Start;
 
-/// Revision of the point-contact numerics: part of every cache key, bumped whenever a change
-/// can move a result.
-pub const SOLVER_REVISION: &str = "point-24";
+/// Revision of the point-contact numerics: part of every cache key, raised whenever a change
+/// can move a result (the revision guard, tests/revision.rs, fails when a result moves and it
+/// is not).
+pub const SOLVER_REVISION: &str = "point-25";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
