@@ -9,10 +9,9 @@
 //! or by Newton-Krylov), so the two differ by the warm solve's algebraic error alone. Levels
 //! 5 and 6 keep each solve under a few seconds; the paths are the same at every level.
 
+use crate::support::physical;
 use repro::paper::cases::shipped_sweep;
-use repro::physics::case::{
-    Case, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
-};
+use repro::physics::case::{Case, CaseForm, DimensionlessCase, Physics, Problem};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
 use repro::pipeline::base::{base_of, BASE_S_BAR};
@@ -21,25 +20,6 @@ use repro::solver::point::{self, Params, PointSolution, Start};
 use std::collections::BTreeMap;
 
 const TOLERANCE: f64 = 5e-4;
-
-fn physical(lubricant: &str, t: f64, ph_gpa: f64, um: f64, slip: f64, tau0_mpa: f64) -> Case {
-    Case {
-        spec: CaseForm::Physical(PhysicalCase {
-            lubricant: LubricantSpec::Named {
-                lubricant: lubricant.into(),
-                temperature_c: t,
-            },
-            ph_pa: ph_gpa * 1e9,
-            um_m_s: um,
-            slip,
-            tau0_pa: tau0_mpa * 1e6,
-            rx_m: 1.03875e-2,
-            ry_m: 1.03875e-2,
-            e_prime_pa: 226e9,
-        }),
-        physics: Physics::figs_4_to_7(),
-    }
-}
 
 fn problem(case: &Case) -> Problem {
     Problem::from_case(case, &LubricantTable::table1()).expect("a valid case")

@@ -29,10 +29,11 @@
 //! only digests that are missing and never overwrites one of the present revisions: a result
 //! that moves under the same revision fails, recording or not.
 
+use crate::support::physical;
 use repro::paper::cases::shipped_sweep;
 use repro::paper::figures::line::table3_jobs;
 use repro::paper::target::LINE_LEVEL;
-use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
+use repro::physics::case::{Case, Physics, Problem};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::{LimitingShearStress, Rheology};
 use repro::physics::thermal::THERMAL_REVISION;
@@ -62,26 +63,6 @@ struct Probe {
     job: Job,
     /// Whether the outcome took the path the probe is there for.
     took_its_path: fn(&CaseOutcome) -> bool,
-}
-
-/// A physical circular contact of Figs. 4-6 (Rx 10.39 mm, E' 226 GPa).
-fn physical(lubricant: &str, t: f64, ph_gpa: f64, um: f64, slip: f64, tau0_mpa: f64) -> Case {
-    Case {
-        spec: CaseForm::Physical(PhysicalCase {
-            lubricant: LubricantSpec::Named {
-                lubricant: lubricant.into(),
-                temperature_c: t,
-            },
-            ph_pa: ph_gpa * 1e9,
-            um_m_s: um,
-            slip,
-            tau0_pa: tau0_mpa * 1e6,
-            rx_m: 1.03875e-2,
-            ry_m: 1.03875e-2,
-            e_prime_pa: 226e9,
-        }),
-        physics: Physics::figs_4_to_7(),
-    }
 }
 
 /// The pipeline's job of `case` in `setup` at `level`, on a composite grid where `patch`.

@@ -1,7 +1,7 @@
 //! What the integration tests share: running the `repro` binary.
 
 use repro::paper::table4::Table4Case;
-use repro::physics::case::Problem;
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -99,3 +99,25 @@ pub const SOLVE_KEYS: [&str; 21] = [
     "residual",
     "seconds",
 ];
+
+/// A physical circular contact with the physics of Figs. 4-6 (Rx 10.39 mm, E' 226 GPa): a
+/// Table 1 lubricant at `t` C, `p_H` in GPa, `u_m` in m/s, the slide-to-roll ratio and `tau0`
+/// in MPa.
+pub fn physical(lubricant: &str, t: f64, ph_gpa: f64, um: f64, slip: f64, tau0_mpa: f64) -> Case {
+    Case {
+        spec: CaseForm::Physical(PhysicalCase {
+            lubricant: LubricantSpec::Named {
+                lubricant: lubricant.into(),
+                temperature_c: t,
+            },
+            ph_pa: ph_gpa * 1e9,
+            um_m_s: um,
+            slip,
+            tau0_pa: tau0_mpa * 1e6,
+            rx_m: 1.03875e-2,
+            ry_m: 1.03875e-2,
+            e_prime_pa: 226e9,
+        }),
+        physics: Physics::figs_4_to_7(),
+    }
+}

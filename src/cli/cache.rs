@@ -43,35 +43,35 @@ fn run_list(args: &CacheDirArgs) -> Result<bool> {
         "  {:<24} {:>8} {:>11}  reached",
         "revisions", "entries", "size"
     );
+    let row = |name: &str, entries: usize, bytes: u64, reached: &str| {
+        println!(
+            "  {name:<24} {entries:>8} {:>11}  {reached}",
+            megabytes(bytes)
+        )
+    };
     for (revisions, share) in &inv.by_revisions {
         let (name, reached) = match revisions {
             Some(r) if Inventory::reachable(revisions) => (r.as_str(), "yes"),
             Some(r) => (r.as_str(), "no: an older revision"),
             None => ("(unrecorded)", "no: older than the revisions' record"),
         };
-        println!(
-            "  {name:<24} {:>8} {:>11}  {reached}",
-            share.entries,
-            megabytes(share.bytes)
-        );
+        row(name, share.entries, share.bytes, reached);
     }
-    if !inv.corrupt.is_empty() {
-        let bytes = inv.corrupt.iter().map(|c| c.1).sum();
-        println!(
-            "  {:<24} {:>8} {:>11}  no: fails verification",
-            "(corrupt)",
-            inv.corrupt.len(),
-            megabytes(bytes)
-        );
-    }
-    if !inv.abandoned.is_empty() {
-        let bytes = inv.abandoned.iter().map(|a| a.1).sum();
-        println!(
-            "  {:<24} {:>8} {:>11}  no: a write that never finished",
+    let others = [
+        ("(corrupt)", &inv.corrupt, "no: fails verification"),
+        (
             "(temporary files)",
-            inv.abandoned.len(),
-            megabytes(bytes)
-        );
+            &inv.abandoned
+                .iter()
+                .map(|(p, b)| (p.display().to_string(), *b))
+                .collect(),
+            "no: a write that never finished",
+        ),
+    ];
+    for (name, files, reached) in others {
+        if !files.is_empty() {
+            row(name, files.len(), files.iter().map(|f| f.1).sum(), reached);
+        }
     }
     let gone = inv.unreachable();
     if gone.entries > 0 {
