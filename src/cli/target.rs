@@ -156,7 +156,7 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
     let levels = match &args.levels {
         Some(l) => l
             .iter()
-            .map(|&v| check_level("--levels", v))
+            .map(|&v| check_level("levels", v))
             .collect::<Result<Vec<_>>>()?,
         None => spec.levels.clone(),
     };

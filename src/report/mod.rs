@@ -5,6 +5,7 @@
 
 pub mod convergence;
 pub mod html;
+pub mod inputs;
 pub mod page;
 pub mod solve;
 
