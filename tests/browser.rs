@@ -128,6 +128,17 @@ impl Browser {
         }
     }
 
+    /// The value of a JavaScript expression in the page, through JSON.
+    fn evaluate(&mut self, session: Option<&str>, expression: &str) -> Value {
+        let r = self.call(
+            session,
+            "Runtime.evaluate",
+            json!({ "expression": format!("JSON.stringify({expression})"), "returnByValue": true }),
+        );
+        serde_json::from_str(r["result"]["value"].as_str().unwrap_or("null"))
+            .unwrap_or_else(|e| panic!("{expression}: {e}: {r}"))
+    }
+
     /// Waits for the event `method`, keeping every event.
     fn wait_for(&mut self, method: &str) {
         if !self.events.iter().any(|e| e["method"] == method) {
@@ -243,40 +254,49 @@ fn the_report_page_loads_in_chromium_with_every_image_and_no_error() {
     let url = format!("file://{}", page.display());
     b.call(s, "Page.navigate", json!({ "url": url }));
     b.wait_for("Page.loadEventFired");
-    let images = b.call(
+    let images = b.evaluate(
         s,
-        "Runtime.evaluate",
-        json!({
-            "expression": "JSON.stringify([document.images.length, Array.from(document.images)\
-                .filter(i => !(i.complete && i.naturalWidth > 0)).map(i => i.src)])",
-            "returnByValue": true
-        }),
+        "[document.images.length, Array.from(document.images)\
+         .filter(i => !(i.complete && i.naturalWidth > 0)).map(i => i.src)]",
     );
-    let images: Value = serde_json::from_str(images["result"]["value"].as_str().unwrap_or("[]"))
-        .expect("the page's images as JSON");
     let metrics = b.call(s, "Page.getLayoutMetrics", json!({}));
     let height = metrics["cssContentSize"]["height"]
         .as_f64()
         .unwrap_or(1000.0);
-    for (name, h) in [
-        ("report-first-screen.png", 1000.0),
-        ("report-page.png", height),
-    ] {
+    // The first screen, the whole page, and one picture per section, to look at a part of
+    // the page at full size.
+    let sections = b.evaluate(
+        s,
+        "Array.from(document.querySelectorAll('section[id]')).map(e => { \
+         const r = e.getBoundingClientRect(); return [e.id, r.top + window.scrollY, r.height]; })",
+    );
+    let sections: Vec<(String, f64, f64)> =
+        serde_json::from_value(sections).expect("the page's sections as JSON");
+    let whole = [
+        ("first-screen".to_string(), 0.0, 1000.0),
+        ("page".to_string(), 0.0, height),
+    ];
+    for (name, y, h) in whole.into_iter().chain(sections) {
         let shot = b.call(
             s,
             "Page.captureScreenshot",
             json!({
                 "format": "png",
                 "captureBeyondViewport": true,
-                "clip": { "x": 0, "y": 0, "width": WIDTH, "height": h, "scale": 1 }
+                "clip": { "x": 0, "y": y, "width": WIDTH, "height": h, "scale": 1 }
             }),
         );
         let png = base64_decode(shot["data"].as_str().expect("a screenshot"));
         assert!(png.starts_with(b"\x89PNG"), "a PNG");
-        std::fs::write(out.join(name), png).expect("the screenshot is written");
+        let file = if name.contains("screen") || name == "page" {
+            format!("report-{name}.png")
+        } else {
+            format!("report-section-{name}.png")
+        };
+        std::fs::write(out.join(file), png).expect("the screenshot is written");
     }
     eprintln!(
-        "report screenshots: {} and {}",
+        "report screenshots: {}, {} and report-section-*.png beside them",
         out.join("report-first-screen.png").display(),
         out.join("report-page.png").display()
     );
