@@ -184,7 +184,7 @@ fn levels(b: &TargetReport) -> Option<String> {
         .map(|(l, n)| format!("{n} on level {l}"))
         .collect();
     Some(format!(
-        "level {asked} asked; the cases ended {} (the accuracy rule refines a case where its error estimate asks)",
+        "level {asked} asked; the cases ended {} (finer where the accuracy rule refines a case, or where its solver has a level of its own: the line contacts)",
         counts.join(", ")
     ))
 }
