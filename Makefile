@@ -8,7 +8,7 @@ VENV ?= .venv
 CARGO_TARGET_DIR ?= $(CURDIR)/target
 export CARGO_TARGET_DIR
 
-.PHONY: build test python python-test figures table4 snapshots check lint bench clean slurm-check
+.PHONY: build test python python-test figures committed-sources table4 snapshots check lint bench clean slurm-check
 
 build:
 	$(CARGO) build --release
@@ -37,8 +37,18 @@ python-test: build python
 # Regenerate the paper: Tables 1-4, Figs. 1-8, the mastercurve target (beyond the paper),
 # figures/summary.csv and figures/index.html
 # at the working level (LEVEL, default 7). Solved cases are cached in .repro-cache/.
-figures: build
+# The committed figures name the commit that made them, so this refuses uncommitted changes
+# to what the binary is built from (the paths of SOURCES in build.rs); ALLOW_DIRTY=1 runs
+# anyway, and the page then says at its top that no commit reproduces it.
+figures: committed-sources build
 	./target/release/repro all --level $(LEVEL)
+
+committed-sources:
+	@if [ -z "$(ALLOW_DIRTY)" ] && ! git diff --quiet HEAD -- build.rs Cargo.toml Cargo.lock src cases templates; then \
+	  echo "make figures: uncommitted changes in the sources (git diff HEAD -- src cases templates ...);" \
+	       "commit them first, or run ALLOW_DIRTY=1 make figures for a page marked as not reproducible" >&2; \
+	  exit 1; \
+	fi
 
 # Show how the results differ from snapshots/, then make them the new baselines.
 snapshots: build

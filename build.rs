@@ -1,9 +1,21 @@
 //! Records the git revision of the build as `REPRO_GIT_REVISION` (provenance of every cache
-//! entry and output): `git rev-parse HEAD`, with `-dirty` when tracked files have changes;
-//! `unknown` outside a git checkout. A `REPRO_GIT_REVISION` in the environment wins (builds
-//! from a source archive).
+//! entry and output): `git rev-parse HEAD`, with `-dirty` when a tracked file the binary is
+//! built from ([`SOURCES`]) differs from that commit; `unknown` outside a git checkout. A
+//! `REPRO_GIT_REVISION` in the environment wins (builds from a source archive). Outputs
+//! (`figures/`, `snapshots/`) and notes do not make a build dirty: regenerating the figures
+//! before committing them must not mark the next build's provenance.
 
 use std::process::Command;
+
+/// What the binary is built from: a change here (committed or not) changes what it computes.
+const SOURCES: [&str; 6] = [
+    "build.rs",
+    "Cargo.toml",
+    "Cargo.lock",
+    "src",
+    "cases",
+    "templates",
+];
 
 fn git(args: &[&str]) -> Option<String> {
     let out = Command::new("git").args(args).output().ok()?;
@@ -16,7 +28,7 @@ fn main() {
     println!("cargo:rerun-if-env-changed=REPRO_GIT_REVISION");
     // The revision moves with HEAD, the branch's ref and the index; the dirty flag with any
     // tracked source file.
-    for path in ["build.rs", "Cargo.toml", "src", "cases", "tests", "benches"] {
+    for path in SOURCES {
         println!("cargo:rerun-if-changed={path}");
     }
     // (A path that does not exist would rerun this script on every build: only existing
@@ -40,8 +52,9 @@ fn main() {
         .filter(|r| !r.is_empty())
         .or_else(|| {
             let head = git(&["rev-parse", "HEAD"])?;
-            let dirty = git(&["status", "--porcelain", "--untracked-files=no"])
-                .is_some_and(|s| !s.is_empty());
+            let mut status = vec!["status", "--porcelain", "--untracked-files=no", "--"];
+            status.extend(SOURCES);
+            let dirty = git(&status).is_some_and(|s| !s.is_empty());
             Some(if dirty { format!("{head}-dirty") } else { head })
         })
         .unwrap_or_else(|| "unknown".into());

@@ -15,13 +15,23 @@ mastercurve, called from Python with the bits of the command line:
 
 from __future__ import annotations
 
-import csv
+import csv as _csv
 import json as _json
-import os
-import tempfile
-from typing import Any, Callable, Dict, List, Mapping, Optional, Union
+import os as _os
+import tempfile as _tempfile
+import typing as _typing
+from collections.abc import Mapping as _Mapping
 
-import numpy as np
+import numpy as _np
+
+if _typing.TYPE_CHECKING:  # names of the annotations, which are strings at run time
+    import os
+    from typing import Any, Callable, Dict, List, Mapping, Optional, Union
+
+    import numpy as np
+
+# The module's namespace is its API (``dir(repro)``): the future import's binding goes too.
+del annotations
 
 __all__ = ["solve", "predict", "lubricant", "study", "Solution", "SolveError", "LEVELS"]
 
@@ -140,7 +150,7 @@ def solve(
 
 
 def _array(v: Any) -> np.ndarray:
-    return np.ascontiguousarray(np.atleast_1d(np.asarray(v, dtype=np.float64)))
+    return _np.ascontiguousarray(_np.atleast_1d(_np.asarray(v, dtype=_np.float64)))
 
 
 def predict(
@@ -169,9 +179,9 @@ def predict(
     named = {"um": um, "slip": slip, "tau0": tau0, "ph": ph, "load": load,
              "temperature": temperature}
     given = {k: _array(v) for k, v in named.items() if v is not None}
-    shape = np.broadcast_shapes(*(a.shape for a in given.values()))
-    n = int(np.prod(shape))
-    flat = {k: (a.ravel() if a.size == 1 else np.ascontiguousarray(np.broadcast_to(a, shape).ravel()))
+    shape = _np.broadcast_shapes(*(a.shape for a in given.values()))
+    n = int(_np.prod(shape))
+    flat = {k: (a.ravel() if a.size == 1 else _np.ascontiguousarray(_np.broadcast_to(a, shape).ravel()))
             for k, a in given.items()}
     out = _repro._predict(
         n=n, ph=flat.get("ph"), load=flat.get("load"), um=flat["um"], slip=flat["slip"],
@@ -189,7 +199,7 @@ def lubricant(*, temperature: Any = None, **spec: Any) -> Dict[str, np.ndarray]:
     """
     t = None if temperature is None else _array(temperature)
     out = _repro._lubricant(temperature=None if t is None else t.ravel(), **spec)
-    shape = () if t is None or np.ndim(temperature) == 0 else t.shape
+    shape = () if t is None or _np.ndim(temperature) == 0 else t.shape
     return {k: v.reshape(shape) for k, v in out.items()}
 
 
@@ -213,19 +223,19 @@ def study(
     starts, and KeyboardInterrupt (or the callback's exception) is raised; the next call
     takes the solved cases from the cache.
     """
-    if isinstance(path_or_dict, Mapping):
+    if isinstance(path_or_dict, _Mapping):
         # The sweep's format is TOML: a dict goes through JSON to the same parser as a file.
         text = _repro._toml_of_json(_json.dumps(dict(path_or_dict)))
         file, stem = "<dict>", "study"
     else:
-        file = os.fspath(path_or_dict)
+        file = _os.fspath(path_or_dict)
         with open(file, encoding="utf-8") as f:
             text = f.read()
-        stem = os.path.splitext(os.path.basename(file))[0] or "study"
+        stem = _os.path.splitext(_os.path.basename(file))[0] or "study"
     keep = out is not None
-    folder = os.fspath(out) if keep else tempfile.mkdtemp(prefix="repro-study-")
+    folder = _os.fspath(out) if keep else _tempfile.mkdtemp(prefix="repro-study-")
     path, _, _ = _repro._study(text=text, file=file, stem=stem, out=folder, level=level,
-                               cache=None if cache is None else os.fspath(cache),
+                               cache=None if cache is None else _os.fspath(cache),
                                progress=progress)
     with open(path, newline="", encoding="utf-8") as f:
         text_csv = f.read()
@@ -235,7 +245,7 @@ def study(
     try:
         import pandas as pd
     except ImportError:
-        return list(csv.DictReader(text_csv.splitlines()))
+        return list(_csv.DictReader(text_csv.splitlines()))
     import io
     return pd.read_csv(io.StringIO(text_csv))
 

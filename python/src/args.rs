@@ -11,7 +11,7 @@ use repro::physics::case::LubricantSpec;
 use repro::physics::density::DensityLaw;
 use repro::physics::pressure_viscosity::BaseOil;
 use repro::physics::viscosity::ViscosityLaw;
-use repro::report::solve::{lubricant_spec, DatasheetInputs, RheologyChoice, SolveInputs};
+use repro::report::inputs::{lubricant_spec, DatasheetInputs, RheologyChoice, SolveInputs};
 use repro::solver::grid::Domain;
 use repro::solver::point;
 use repro::solver::point::composite::Patch;

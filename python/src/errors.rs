@@ -4,7 +4,7 @@
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use repro::report::solve::InputError;
+use repro::report::inputs::InputError;
 use repro::solver::output::SolveError;
 
 /// The command line's message with its flags as this module's keywords
@@ -25,9 +25,10 @@ pub fn keywords(message: &str) -> String {
     out
 }
 
-/// Bad input: `ValueError` with the command line's message, naming the keyword.
+/// Bad input: `ValueError` with the command line's message, naming the keyword (the
+/// error's own flag and any other it mentions).
 pub fn value_error(e: InputError) -> PyErr {
-    PyValueError::new_err(keywords(&e.0))
+    PyValueError::new_err(keywords(&e.to_string()))
 }
 
 /// A failed solve as `repro.SolveError` (defined in `repro/__init__.py`): the message, the

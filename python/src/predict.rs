@@ -13,7 +13,7 @@ use repro::paper::prediction::{operating_point, Band, Prediction};
 use repro::physics::case::{LubricantSpec, Physics};
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::traction::{characteristic, Characteristic, Load};
-use repro::report::solve::{self, physics};
+use repro::report::inputs::{flag_error, physics};
 
 /// A lubricant resolved at one temperature: `alpha` and `eta0`, and `alpha`'s band when a
 /// correlation estimated it ([`LubricantSpec::resolve`], the datasheet's laws).
@@ -25,9 +25,7 @@ struct Resolved {
 }
 
 fn resolve(spec: &LubricantSpec, lubs: &LubricantTable) -> PyResult<Resolved> {
-    let state = spec
-        .resolve(lubs)
-        .map_err(|e| value_error(solve::flag_error(e)))?;
+    let state = spec.resolve(lubs).map_err(|e| value_error(flag_error(e)))?;
     let band = match spec {
         LubricantSpec::Datasheet {
             datasheet,
@@ -36,7 +34,7 @@ fn resolve(spec: &LubricantSpec, lubs: &LubricantTable) -> PyResult<Resolved> {
         } => datasheet
             .resolve()
             .and_then(|d| d.at(*temperature_c, *alpha_per_gpa))
-            .map_err(|e| value_error(solve::flag_error(e.into())))?
+            .map_err(|e| value_error(flag_error(e.into())))?
             .correlated
             .map(|e| [e.low_per_pa, e.high_per_pa]),
         _ => None,
@@ -64,11 +62,9 @@ fn characteristic_at(
         },
         ..contact.clone()
     };
-    let case = given
-        .case(lubs)
-        .map_err(|e| value_error(solve::flag_error(e)))?;
-    let point = operating_point(&case).map_err(|e| value_error(solve::flag_error(e)))?;
-    characteristic(&point, lubs).map_err(|e| value_error(solve::flag_error(e)))
+    let case = given.case(lubs).map_err(|e| value_error(flag_error(e)))?;
+    let point = operating_point(&case).map_err(|e| value_error(flag_error(e)))?;
+    characteristic(&point, lubs).map_err(|e| value_error(flag_error(e)))
 }
 
 /// The predictor of `repro predict` over arrays of equal length `n` (or length 1,
@@ -187,8 +183,8 @@ pub fn _predict<'py>(
         if refined {
             let case = contact
                 .case(&lubs)
-                .map_err(|e| value_error(solve::flag_error(e)))?;
-            let p = Prediction::of(&case, &lubs).map_err(|e| value_error(solve::flag_error(e)))?;
+                .map_err(|e| value_error(flag_error(e)))?;
+            let p = Prediction::of(&case, &lubs).map_err(|e| value_error(flag_error(e)))?;
             row.extend([p.central.mu_bar_refined, p.central.mu_refined]);
         }
         for (col, v) in cols.iter_mut().zip(row) {

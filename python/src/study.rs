@@ -7,7 +7,7 @@ use repro::pipeline::cache::Cache;
 use repro::pipeline::context::{check_writable, Context};
 use repro::pipeline::executor::RunProgress;
 use repro::pipeline::sweep::Sweep;
-use repro::report::solve::check_level;
+use repro::report::inputs::check_level;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Mutex;
@@ -41,7 +41,7 @@ pub fn _study(
 ) -> PyResult<(String, usize, Option<usize>)> {
     let sweep = Sweep::parse(file, text).map_err(|e| PyValueError::new_err(e.to_string()))?;
     if let Some(l) = level {
-        check_level("--level", l).map_err(value_error)?;
+        check_level("level", l).map_err(value_error)?;
     }
     check_writable(&out).map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
     let stop = AtomicBool::new(false);

@@ -9,7 +9,7 @@ use repro::pipeline::csv::write_atomic;
 /// Runs the study; false when a case converged at none of its levels.
 pub fn run(args: &AccuracyArgs) -> Result<bool> {
     for &l in &args.levels.0 {
-        check_level("--levels", l)?;
+        check_level("levels", l)?;
     }
     if args.repeats == 0 {
         bail!("--repeats: must be at least 1");

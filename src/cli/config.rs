@@ -13,15 +13,15 @@ use repro::physics::viscosity::ViscosityLaw;
 use repro::pipeline::cache::Cache;
 use repro::pipeline::context::{check_writable, Context};
 use repro::pipeline::executor::RunProgress;
-use repro::report::solve::{self, DatasheetInputs, RheologyChoice, SolveInputs};
-pub use repro::report::solve::{flag_error, lubricant_spec, physics};
+use repro::report::inputs::{self, DatasheetInputs, RheologyChoice, SolveInputs};
+pub use repro::report::inputs::{flag_error, lubricant_spec, physics};
 use repro::solver::grid::Domain;
 use repro::solver::point;
 use repro::solver::point::composite::Patch;
 
 /// Checks a grid level flag.
-pub fn check_level(flag: &str, level: u32) -> Result<u32> {
-    Ok(solve::check_level(flag, level)?)
+pub fn check_level(flag: &'static str, level: u32) -> Result<u32> {
+    Ok(inputs::check_level(flag, level)?)
 }
 
 impl DatasheetArgs {
@@ -129,7 +129,7 @@ pub fn context<'a>(
     warn: &'a (dyn Fn(String) + Sync),
 ) -> Result<Context<'a>> {
     if let Some(l) = args.level {
-        check_level("--level", l)?;
+        check_level("level", l)?;
     }
     if writes_outputs {
         check_writable(&args.out).context("--out")?;

@@ -30,7 +30,7 @@ use std::time::Instant;
 
 /// `repro predict`: false when the --solve did not converge (after printing why).
 pub fn run(args: &PredictArgs) -> Result<bool> {
-    let level = check_level("--level", args.level)?;
+    let level = check_level("level", args.level)?;
     let lubricant = lubricant_spec(
         args.lubricant.as_deref(),
         args.temperature,

@@ -7,8 +7,10 @@ use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
 use super::shard::{self, TargetJobs};
 use anyhow::{Context as _, Result};
+use repro::paper::mastercurve::fit::FIT_TAU_C_MIN;
 use repro::paper::table4;
 use repro::paper::{self, Target, REGISTRY};
+use repro::pipeline::cache::GIT_REVISION;
 use repro::pipeline::context::Context;
 use repro::pipeline::csv::write_atomic;
 use repro::pipeline::executor::{run_jobs, RunProgress};
@@ -62,6 +64,12 @@ pub fn all(args: &TargetArgs) -> Result<bool> {
     let names: Vec<&str> = REGISTRY.iter().map(|a| a.name()).collect();
     if let Some(s) = shard::detect(args)? {
         return shard::run(args, s, |ctx| target_jobs(&names, ctx));
+    }
+    if GIT_REVISION.ends_with("-dirty") {
+        eprintln!(
+            "warning: this build ({GIT_REVISION}) has uncommitted source changes: index.html \
+             will say at its top that no commit reproduces it (make figures refuses such a build)"
+        );
     }
     let mut solved = None;
     let built = in_context(args, true, |ctx| {
@@ -129,7 +137,16 @@ pub fn study(args: &RunArgs) -> Result<bool> {
     })?;
     built.seconds = t.elapsed().as_secs_f64();
     println!("{}", summary_line(&built));
-    println!("mastercurve (paper: c = 5): {}", built.ours);
+    if let Some(fit) = built.eq13() {
+        println!(
+            "mastercurve (paper: c = 5): {} points with tau_c >= {FIT_TAU_C_MIN}: {}; c = {:.2} over all solved",
+            fit.points,
+            fit.describe(),
+            built.eq13_c_all().unwrap_or(f64::NAN)
+        );
+    } else {
+        println!("mastercurve (paper: c = 5): {}", built.ours);
+    }
     Ok(built.solved == Some(built.cases))
 }
 
@@ -139,7 +156,7 @@ pub fn table4(args: &Table4Args) -> Result<bool> {
     let levels = match &args.levels {
         Some(l) => l
             .iter()
-            .map(|&v| check_level("--levels", v))
+            .map(|&v| check_level("levels", v))
             .collect::<Result<Vec<_>>>()?,
         None => spec.levels.clone(),
     };

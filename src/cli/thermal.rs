@@ -9,7 +9,7 @@ pub use repro::report::solve::{thermal_json as json_of, thermal_text as describe
 impl ThermalArgs {
     /// The inputs, checked.
     pub fn inputs(&self) -> Result<ThermalInputs> {
-        Ok(repro::report::solve::thermal_inputs(
+        Ok(repro::report::inputs::thermal_inputs(
             self.k_solid,
             self.k_lubricant,
         )?)

@@ -110,6 +110,31 @@ pub enum Measure {
     /// The discretisation error of the target's solved cases
     /// ([`crate::solver::richardson`]).
     DiscretisationError(ErrorSummary),
+    /// The levels its solved cases ended on, `(level, cases)` in ascending level: a case
+    /// ends finer than the level asked where the accuracy rule refines it.
+    LevelsEnded(Vec<(u32, usize)>),
+    /// The same cases solved in the paper's setup (`P = 0` on the paper's domain) against
+    /// Eq. (13), over the same `tau_c` range as [`Measure::Eq13`]: Fig. 6 draws them beside
+    /// the flooded contact.
+    PaperSetupEq13(Fit),
+    /// One case solved at each of a series of levels (Table 4), in ascending level.
+    GridConvergence(Vec<LevelResult>),
+}
+
+/// One level of a grid-convergence study ([`Measure::GridConvergence`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LevelResult {
+    /// Grid level.
+    pub level: u32,
+    /// Central film `H = h/c`, where solved.
+    pub h_central: Option<f64>,
+    /// Sliding `mu-bar`, where solved.
+    pub mu_bar: Option<f64>,
+    /// The solve's status as the table's CSV writes it (`ok`, `ok-film-nonpositive`,
+    /// `failed`).
+    pub status: &'static str,
+    /// Wall time of the solve, s, where known.
+    pub seconds: Option<f64>,
 }
 
 /// The median of `v` (NaN when empty).
@@ -174,18 +199,36 @@ pub struct ErrorSummary {
 }
 
 impl Measure {
+    /// The count of cases per level of `levels` (each a solved case's level).
+    pub fn levels_ended(levels: impl IntoIterator<Item = u32>) -> Measure {
+        let mut counts = std::collections::BTreeMap::new();
+        for l in levels {
+            *counts.entry(l).or_insert(0) += 1;
+        }
+        Measure::LevelsEnded(counts.into_iter().collect())
+    }
+
     /// The measures of points `(tau_c, mu-bar)` against Eq. (13): the fit over the Eyring
     /// regime (`tau_c >= FIT_TAU_C_MIN`) and `c` over all, each where there are enough points.
     pub fn eq13(points: &[(f64, f64)]) -> Vec<Measure> {
-        let in_range: Vec<(f64, f64)> = points
-            .iter()
-            .copied()
-            .filter(|p| p.0 >= FIT_TAU_C_MIN)
+        let mut out: Vec<Measure> = eq13_regime_fit(points)
+            .map(Measure::Eq13)
+            .into_iter()
             .collect();
-        let mut out: Vec<Measure> = fit(&in_range).map(Measure::Eq13).into_iter().collect();
         out.extend(fit(points).map(|f| Measure::Eq13AllPoints { c: f.c }));
         out
     }
+}
+
+/// The fit of Eq. (13) to the points `(tau_c, mu-bar)` of the Eyring regime
+/// (`tau_c >= FIT_TAU_C_MIN`), where there are enough.
+pub fn eq13_regime_fit(points: &[(f64, f64)]) -> Option<Fit> {
+    let in_range: Vec<(f64, f64)> = points
+        .iter()
+        .copied()
+        .filter(|p| p.0 >= FIT_TAU_C_MIN)
+        .collect();
+    fit(&in_range)
 }
 
 /// What building a target reports: its row of `figures/summary.csv`, its line on stdout and
@@ -250,6 +293,42 @@ impl TargetReport {
     pub fn discretisation_error(&self) -> Option<&ErrorSummary> {
         self.measures.iter().find_map(|m| match m {
             Measure::DiscretisationError(e) => Some(e),
+            _ => None,
+        })
+    }
+
+    /// The levels its solved cases ended on, `(level, cases)`, where it counted them.
+    pub fn levels_ended(&self) -> Option<&[(u32, usize)]> {
+        self.measures.iter().find_map(|m| match m {
+            Measure::LevelsEnded(l) => Some(l.as_slice()),
+            _ => None,
+        })
+    }
+
+    /// Adds `levels` (each a solved case's level) to the levels its cases ended on.
+    pub fn count_levels(&mut self, levels: impl IntoIterator<Item = u32>) {
+        let known = self.levels_ended().unwrap_or_default().iter();
+        let all = known
+            .flat_map(|&(l, n)| std::iter::repeat_n(l, n))
+            .chain(levels)
+            .collect::<Vec<u32>>();
+        self.measures
+            .retain(|m| !matches!(m, Measure::LevelsEnded(_)));
+        self.measures.push(Measure::levels_ended(all));
+    }
+
+    /// The paper's setup against Eq. (13), where the target solved it.
+    pub fn paper_setup_eq13(&self) -> Option<&Fit> {
+        self.measures.iter().find_map(|m| match m {
+            Measure::PaperSetupEq13(f) => Some(f),
+            _ => None,
+        })
+    }
+
+    /// Its grid-convergence study, if it is one.
+    pub fn grid_convergence(&self) -> Option<&[LevelResult]> {
+        self.measures.iter().find_map(|m| match m {
+            Measure::GridConvergence(l) => Some(l.as_slice()),
             _ => None,
         })
     }

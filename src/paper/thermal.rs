@@ -13,7 +13,7 @@ use crate::paper::figures::{SweepFigure, FIG4, FIG5, FIG6};
 use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::paper::table4::Table4Case;
-use crate::paper::target::{Target, TargetReport};
+use crate::paper::target::{Measure, Target, TargetReport};
 use crate::physics::case::CaseForm;
 use crate::physics::thermal::ISOTHERMAL_CORRECTION_MAX;
 use crate::pipeline::context::Context;
@@ -327,6 +327,9 @@ fn build(ctx: &Context) -> Result<TargetReport, PipelineError> {
         level,
         paper_claim: "isothermal contact; with significant sliding Eq. (14) predicts too much friction (Conclusions)".into(),
         ours,
+        measures: vec![Measure::levels_ended(
+            rows.iter().filter_map(|r| r.run.solved().map(|s| s.level)),
+        )],
         ..TargetReport::emitted(
             "thermal",
             "Beyond the paper: the shear-heating correction of Figs. 4-6",

@@ -1,71 +1,93 @@
-//! HTML pieces of the report: escaping, and tables that show numbers as a reader wants them
-//! (four significant digits, `40` rather than `4.000000e1`, powers of ten as superscripts,
-//! units from the column names) while the CSVs keep full precision.
+//! Pieces of the report page as data the template renders: numbers as a reader wants them
+//! (four significant digits, `40` rather than `4.000000e1`, powers of ten as superscripts)
+//! and a CSV as a table with units spelled out in its headings, while the CSVs keep full
+//! precision.
 
 use crate::pipeline::csv::reader;
 use crate::plot::significant;
+use std::fmt;
 
-/// Escapes text for HTML element content and attribute values.
-pub fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
+/// A number as the page shows it: four significant digits, plain between 0.001 and 100 000
+/// (trailing zeros dropped: `40`, `0.005`, `41.13`), `3.075×10<sup>18</sup>` otherwise.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let v = self.0;
+        if v == 0.0 {
+            return f.write_str("0");
         }
-    }
-    out
-}
-
-/// A number with four significant digits, as HTML: plain between 0.001 and 100 000 (trailing
-/// zeros dropped: `40`, `0.005`, `41.13`), `3.075×10<sup>18</sup>` otherwise.
-pub fn human(v: f64) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return if v == 0.0 { "0".into() } else { v.to_string() };
-    }
-    if (1e-3..1e5).contains(&v.abs()) {
-        significant(v, 4)
-    } else {
+        if !v.is_finite() {
+            return write!(f, "{v}");
+        }
+        if (1e-3..1e5).contains(&v.abs()) {
+            return f.write_str(&significant(v, 4));
+        }
         let s = format!("{v:.3e}");
         let (mantissa, exp) = s.split_once('e').unwrap_or((&s, "0"));
-        format!("{mantissa}×10<sup>{exp}</sup>")
+        write!(f, "{mantissa}×10<sup>{exp}</sup>")
     }
 }
 
-/// A cell of a CSV as HTML: a number in [`human`] form, a range `a-b` or a list `a/b/c` of
-/// numbers likewise (Table 2), anything else escaped.
-fn cell(text: &str) -> String {
-    // A '-' after a digit separates a range (after an 'e' it is an exponent's sign).
-    let range_at = text
-        .char_indices()
-        .skip(1)
-        .find(|&(i, c)| c == '-' && text[..i].ends_with(|p: char| p.is_ascii_digit()))
-        .map(|(i, _)| i);
-    if let Some(i) = range_at {
-        let (a, b) = (&text[..i], &text[i + 1..]);
-        if a.parse::<f64>().is_ok() && b.parse::<f64>().is_ok() {
-            return format!("{}&ndash;{}", number(a), number(b));
+/// Its text is digits, a sign, a point, `×10` and a `<sup>` of its own: nothing to escape.
+impl askama::filters::HtmlSafe for Num {}
+
+/// `v` as a percentage, [`Num`]'s digits.
+pub fn percent(v: f64) -> Num {
+    Num(100.0 * v)
+}
+
+/// `v` in [`Num`] form, as its HTML text.
+pub fn human(v: f64) -> String {
+    Num(v).to_string()
+}
+
+/// A cell of a CSV: a number, a range `a-b` or a list `a/b/c` of numbers (Table 2), or text.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// Text, shown as it is (escaped by the template).
+    Text(String),
+    /// A number.
+    Num(Num),
+    /// A range of two numbers.
+    Range(Num, Num),
+    /// Numbers separated by `/`.
+    List(Vec<Num>),
+}
+
+impl Cell {
+    /// The cell of a CSV field.
+    pub fn of(text: &str) -> Cell {
+        // A '-' after a digit separates a range (after an 'e' it is an exponent's sign).
+        let range_at = text
+            .char_indices()
+            .skip(1)
+            .find(|&(i, c)| c == '-' && text[..i].ends_with(|p: char| p.is_ascii_digit()))
+            .map(|(i, _)| i);
+        if let Some(i) = range_at {
+            if let (Some(a), Some(b)) = (number(&text[..i]), number(&text[i + 1..])) {
+                return Cell::Range(a, b);
+            }
         }
+        if text.contains('/') {
+            if let Some(list) = text.split('/').map(number).collect::<Option<Vec<_>>>() {
+                return Cell::List(list);
+            }
+        }
+        number(text).map_or_else(|| Cell::Text(text.to_string()), Cell::Num)
     }
-    if text.contains('/') && text.split('/').all(|p| p.parse::<f64>().is_ok()) {
-        return text.split('/').map(number).collect::<Vec<_>>().join("/");
-    }
-    number(text)
 }
 
-/// A single number in [`human`] form, anything else escaped.
-fn number(text: &str) -> String {
-    let looks_numeric = text
-        .chars()
-        .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
-    match text.parse::<f64>() {
-        Ok(v) if looks_numeric && !text.is_empty() => human(v),
-        _ => escape(text),
-    }
+/// A field that is a number written as a number (not `inf`, `NaN` or a word that parses).
+fn number(text: &str) -> Option<Num> {
+    let looks_numeric = !text.is_empty()
+        && text
+            .chars()
+            .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
+    looks_numeric
+        .then(|| text.parse::<f64>().ok().map(Num))
+        .flatten()
 }
 
 /// Unit suffixes of our column names and how a reader writes them (longest first where one
@@ -80,49 +102,48 @@ const UNITS: [(&str, &str); 6] = [
 ];
 
 /// A column name as a heading: the unit suffix spelled out, underscores as spaces.
-fn heading(name: &str) -> String {
+pub fn heading(name: &str) -> String {
     if name == "temperature_c" {
         return "temperature (°C)".into();
     }
-    let text = UNITS
+    UNITS
         .iter()
         .find_map(|(suffix, unit)| {
             name.strip_suffix(suffix)
                 .filter(|stem| !stem.is_empty())
                 .map(|stem| format!("{} ({unit})", stem.replace('_', " ")))
         })
-        .unwrap_or_else(|| name.replace('_', " "));
-    escape(&text)
+        .unwrap_or_else(|| name.replace('_', " "))
 }
 
-/// A CSV as an HTML table that scrolls sideways when wide, at most `max_rows` rows, the rest
-/// counted below it.
-pub fn csv_table(csv: &str, max_rows: usize) -> String {
-    let mut rows = reader(csv).into_records().filter_map(Result::ok);
-    let Some(header) = rows.next() else {
-        return String::new();
-    };
-    let head: String = header
-        .iter()
-        .map(|c| format!("<th>{}</th>", heading(c)))
-        .collect();
-    let mut out = format!("<div class=\"scroll\"><table>\n<tr>{head}</tr>\n");
-    let rows: Vec<csv::StringRecord> = rows.collect();
-    for row in rows.iter().take(max_rows) {
-        let cells: String = row
-            .iter()
-            .map(|c| format!("<td>{}</td>", cell(c)))
-            .collect();
-        out.push_str(&format!("<tr>{cells}</tr>\n"));
+/// A CSV as the page shows it: its headings, at most `max_rows` rows, and how many more the
+/// file has.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// Column headings ([`heading`]).
+    pub head: Vec<String>,
+    /// Rows shown.
+    pub rows: Vec<Vec<Cell>>,
+    /// Rows of the file not shown.
+    pub more: usize,
+}
+
+impl Table {
+    /// The table of `csv`, cut after `max_rows` rows; `None` for a file without a header.
+    pub fn of_csv(csv: &str, max_rows: usize) -> Option<Table> {
+        let mut records = reader(csv).into_records().filter_map(Result::ok);
+        let head = records.next()?.iter().map(heading).collect();
+        let all: Vec<csv::StringRecord> = records.collect();
+        Some(Table {
+            head,
+            rows: all
+                .iter()
+                .take(max_rows)
+                .map(|r| r.iter().map(Cell::of).collect())
+                .collect(),
+            more: all.len().saturating_sub(max_rows),
+        })
     }
-    out.push_str("</table></div>\n");
-    if rows.len() > max_rows {
-        out.push_str(&format!(
-            "<p class=\"note\">{} more rows in the CSV.</p>\n",
-            rows.len() - max_rows
-        ));
-    }
-    out
 }
 
 #[cfg(test)]
@@ -141,6 +162,7 @@ mod tests {
         assert_eq!(human(3.074899e18), "3.075×10<sup>18</sup>");
         assert_eq!(human(2.1e-5), "2.100×10<sup>-5</sup>");
         assert_eq!(human(0.0), "0");
+        assert_eq!(percent(0.0421).to_string(), "4.21");
     }
 
     #[test]
@@ -153,24 +175,32 @@ mod tests {
         assert_eq!(heading("mu_bar_sliding"), "mu bar sliding");
         assert_eq!(heading("slip_percent"), "slip (%)");
         assert_eq!(heading("tau_c"), "tau c");
-        assert_eq!(cell("64x64"), "64x64");
-        assert_eq!(cell("ok-film-nonpositive"), "ok-film-nonpositive");
-        assert_eq!(cell("4.000000e1"), "40");
-        assert_eq!(cell("e"), "e");
-        assert_eq!(cell("1.000000e0-3.000000e0"), "1&ndash;3");
-        assert_eq!(cell("2.1e-5"), "2.100×10<sup>-5</sup>");
-        assert_eq!(cell("40/60/100"), "40/60/100");
-        assert_eq!(cell("mineral-oil-a"), "mineral-oil-a");
+        let text = |s: &str| Cell::Text(s.to_string());
+        assert_eq!(Cell::of("64x64"), text("64x64"));
+        assert_eq!(Cell::of("ok-film-nonpositive"), text("ok-film-nonpositive"));
+        assert_eq!(Cell::of("4.000000e1"), Cell::Num(Num(40.0)));
+        assert_eq!(Cell::of("e"), text("e"));
+        assert_eq!(Cell::of("inf"), text("inf"));
+        assert_eq!(
+            Cell::of("1.000000e0-3.000000e0"),
+            Cell::Range(Num(1.0), Num(3.0))
+        );
+        assert_eq!(Cell::of("2.1e-5"), Cell::Num(Num(2.1e-5)));
+        assert_eq!(
+            Cell::of("40/60/100"),
+            Cell::List(vec![Num(40.0), Num(60.0), Num(100.0)])
+        );
+        assert_eq!(Cell::of("mineral-oil-a"), text("mineral-oil-a"));
     }
 
     #[test]
-    fn long_tables_are_cut_with_a_count_and_scroll() {
+    fn long_tables_are_cut_with_a_count() {
         let csv = std::iter::once("x".to_string())
             .chain((0..40).map(|i| i.to_string()))
             .collect::<Vec<_>>()
             .join("\n");
-        let t = csv_table(&csv, 30);
-        assert_eq!(t.matches("<tr>").count(), 31);
-        assert!(t.contains("10 more rows") && t.starts_with("<div class=\"scroll\">"));
+        let t = Table::of_csv(&csv, 30).unwrap();
+        assert_eq!((t.rows.len(), t.more), (30, 10));
+        assert_eq!(t.head, vec!["x".to_string()]);
     }
 }

@@ -121,6 +121,10 @@ impl Target for SweepFigure {
             report.solved = report.solved.map(|s| s + solved);
             let cached = line.iter().filter(|r| r.cached).count();
             report.cached = report.cached.map(|c| c + cached);
+            report.count_levels(
+                line.iter()
+                    .filter_map(|r| r.outcome.solved().map(|s| s.level)),
+            );
         }
         write_provenance(name, &mut report, &runs, line.as_deref(), ctx)?;
         report.paper_claim = self.claim.to_string();

@@ -411,6 +411,7 @@ fn build(ctx: &Context) -> Result<TargetReport, PipelineError> {
             files,
         )
     };
+    report.count_levels(runs.filter_map(|r| r.solved().map(|s| s.level)));
     // lss.csv's rows are the limited runs in order (their Eyring twins are Fig. 4's rows).
     write_provenance("lss", &mut report, &limited_runs, None, ctx)?;
     Ok(report)

@@ -4,14 +4,12 @@
 //! base, as every sweep, unless `cold`), and reported ([`Solved::json`], [`Solved::text`]).
 //! The same inputs give the same bits whoever asks.
 
-mod inputs;
 mod report;
 mod thermal;
 
-pub use inputs::{
-    check_level, flag_error, lubricant_spec, physics, thermal_inputs, DatasheetInputs, InputError,
-    RheologyChoice, SolveInputs,
-};
+pub use crate::report::inputs::{InputError, SolveInputs};
+
+use crate::report::inputs::flag_error;
 pub use report::{line_report, point_report, rolling_text, SolveReport};
 pub use thermal::{describe as thermal_text, json_of as thermal_json};
 

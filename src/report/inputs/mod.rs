@@ -1,231 +1,31 @@
-//! The inputs of one solve as plain data (the command line's flags, the Python package's
-//! keywords), turned once into what the library takes: a [`Case`], solver parameters, a line
-//! problem, the thermal post-process's inputs. Every error names the flag.
+//! The layer between the flags and the library: the inputs of one solve as plain data (the
+//! command line's flags, the Python package's keywords), turned once into what the library
+//! takes (a [`Case`], solver parameters, a line problem, the thermal post-process's inputs),
+//! or into an [`InputError`] that names its [`Flag`]. Nothing below takes a flag; nothing
+//! here solves.
+
+mod error;
+mod lubricant;
+
+pub use error::{check_level, flag_error, Flag, InputError};
+pub use lubricant::{lubricant_spec, physics, DatasheetInputs, RheologyChoice};
 
 use crate::paper::target::WORKING_LEVEL;
-use crate::physics::case::{
-    Case, CaseError, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
-};
-use crate::physics::datasheet::Datasheet;
+use crate::physics::case::{Case, CaseForm, DimensionlessCase, PhysicalCase, Physics, Problem};
 use crate::physics::density::DensityLaw;
 use crate::physics::line_contact::{LineDimensionlessCase, LinePhysicalCase, LineProblem};
-use crate::physics::lubricant::{LubricantError, LubricantTable};
-use crate::physics::pressure_viscosity::BaseOil;
-use crate::physics::rheology::{LimitingShearStress, Rheology};
+use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{FilmProperties, Solid, ThermalInputs};
 use crate::physics::viscosity::ViscosityLaw;
 use crate::solver::grid::Domain;
 use crate::solver::point::composite::Patch;
 use crate::solver::{line, point};
+use error::need;
+use lubricant::rheology;
 
-/// An input that cannot be used, as one line that starts with the flag it names
-/// (`--s-bar: required`).
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct InputError(pub String);
-
-impl InputError {
-    /// The flag the message names, without its dashes (`s-bar`), if it names one.
-    pub fn flag(&self) -> Option<&str> {
-        let rest = self.0.strip_prefix("--")?;
-        let end = rest
-            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
-            .unwrap_or(rest.len());
-        Some(&rest[..end])
-    }
-}
-
+/// Returns the error that `flag` is wrong as the formatted message says.
 macro_rules! bail {
-    ($($t:tt)*) => { return Err(InputError(format!($($t)*))) };
-}
-
-/// Checks a grid level flag.
-pub fn check_level(flag: &str, level: u32) -> Result<u32, InputError> {
-    if (point::MIN_LEVEL..=point::MAX_LEVEL).contains(&level) {
-        Ok(level)
-    } else {
-        bail!(
-            "{flag}: level {level} outside the supported range {}..={}",
-            point::MIN_LEVEL,
-            point::MAX_LEVEL
-        )
-    }
-}
-
-/// A case error as the flag it names.
-pub fn flag_error(e: CaseError) -> InputError {
-    InputError(match e {
-        CaseError::Field { field, message } => format!("--{field}: {message}"),
-        CaseError::Lubricant(l @ LubricantError::Unknown { .. }) => format!("--lubricant: {l}"),
-        CaseError::Lubricant(l @ LubricantError::Temperature { .. }) => {
-            format!("--temperature: {l}")
-        }
-        CaseError::Datasheet(d) => format!("--{}: {d}", datasheet_flag(d.field())),
-        other => format!("{other}"),
-    })
-}
-
-/// The flag of a datasheet key ([`crate::physics::datasheet::DatasheetError::field`]).
-fn datasheet_flag(key: &str) -> &str {
-    match key {
-        "nu40_mm2_s" => "nu40",
-        "iso_vg" => "iso-vg",
-        "nu100_mm2_s" => "nu100",
-        "viscosity_index" => "vi",
-        "rho15_kg_m3" => "rho15",
-        "expansion15_per_k" => "expansion15",
-        "base_oil" => "base-oil",
-        "alpha_per_gpa" => "alpha",
-        "temperature_c" => "temperature",
-        other => other,
-    }
-}
-
-/// A lubricant's datasheet as given: eta0 = nu rho at the temperature by ASTM D341 and
-/// D1250, alpha from AGMA 925 for the base oil unless alpha is given.
-#[derive(Debug, Clone, Default)]
-pub struct DatasheetInputs {
-    /// Kinematic viscosity at 40 C, mm^2/s (or `iso_vg`).
-    pub nu40: Option<f64>,
-    /// ISO 3448 viscosity grade (or `nu40`).
-    pub iso_vg: Option<u32>,
-    /// Kinematic viscosity at 100 C, mm^2/s (or `vi`).
-    pub nu100: Option<f64>,
-    /// Viscosity index, ASTM D2270 (or `nu100`).
-    pub vi: Option<f64>,
-    /// Density at 15 C, kg/m^3.
-    pub rho15: Option<f64>,
-    /// Thermal expansion coefficient at 15 C, 1/K.
-    pub expansion15: Option<f64>,
-    /// Base-oil type, for the pressure-viscosity correlation.
-    pub base_oil: Option<BaseOil>,
-}
-
-impl DatasheetInputs {
-    /// Whether any datasheet input was given.
-    pub fn any(&self) -> bool {
-        self.nu40.is_some()
-            || self.iso_vg.is_some()
-            || self.nu100.is_some()
-            || self.vi.is_some()
-            || self.rho15.is_some()
-            || self.expansion15.is_some()
-            || self.base_oil.is_some()
-    }
-}
-
-/// The rheology asked for; the limiting shear stress's parameters are inputs of their own.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum RheologyChoice {
-    /// Eyring, the paper's.
-    Eyring,
-    /// Newtonian.
-    Newtonian,
-    /// Eyring with a limiting shear stress tau_L = tau_L0 + Lambda p (beyond the paper).
-    EyringLss,
-}
-
-/// The lubricant of the physical form: a lubricant of Table 1 at `temperature`, `alpha` and
-/// `eta0` given directly, or a datasheet at `temperature` (with `alpha` when the user knows
-/// it). Which inputs go together is checked here; the datasheet's values are checked when
-/// the case is resolved.
-pub fn lubricant_spec(
-    lubricant: Option<&str>,
-    temperature: Option<f64>,
-    alpha: Option<f64>,
-    eta0: Option<f64>,
-    sheet: &DatasheetInputs,
-) -> Result<LubricantSpec, InputError> {
-    if sheet.any() {
-        if lubricant.is_some() {
-            bail!("--lubricant: a lubricant of Table 1 and datasheet flags (--nu40, --iso-vg, --nu100, --vi, --rho15, --expansion15, --base-oil) cannot be mixed");
-        }
-        if eta0.is_some() {
-            bail!("--eta0: a datasheet gives eta0 (nu rho at --temperature); drop --eta0");
-        }
-        let one_of = |a: bool, b: bool, fa: &str, fb: &str| -> Result<(), InputError> {
-            match (a, b) {
-                (true, true) => bail!("{fb}: give {fa} or {fb}, not both"),
-                (false, false) => bail!("{fa}: required with a datasheet (or {fb})"),
-                _ => Ok(()),
-            }
-        };
-        one_of(
-            sheet.nu40.is_some(),
-            sheet.iso_vg.is_some(),
-            "--nu40",
-            "--iso-vg",
-        )?;
-        one_of(sheet.nu100.is_some(), sheet.vi.is_some(), "--nu100", "--vi")?;
-        let datasheet = Datasheet {
-            nu40_mm2_s: sheet.nu40,
-            iso_vg: sheet.iso_vg,
-            nu100_mm2_s: sheet.nu100,
-            viscosity_index: sheet.vi,
-            rho15_kg_m3: need(sheet.rho15, "--rho15 (with a datasheet)")?,
-            expansion15_per_k: sheet.expansion15,
-            base_oil: match sheet.base_oil {
-                Some(b) => b,
-                None => bail!("--base-oil: required with a datasheet (mineral, pao or pag)"),
-            },
-        };
-        return Ok(LubricantSpec::Datasheet {
-            datasheet,
-            temperature_c: need(temperature, "--temperature (with a datasheet)")?,
-            alpha_per_gpa: alpha.map(|a| a * 1e9),
-        });
-    }
-    Ok(match (lubricant, alpha) {
-        (Some(name), None) => LubricantSpec::Named {
-            lubricant: name.to_string(),
-            temperature_c: need(temperature, "--temperature")?,
-        },
-        (None, Some(alpha)) => LubricantSpec::Given {
-            alpha_per_pa: alpha,
-            eta0_pa_s: need(eta0, "--eta0")?,
-        },
-        (Some(_), Some(_)) => bail!("--lubricant and --alpha cannot be mixed"),
-        (None, None) => bail!("--lubricant: required (or --alpha and --eta0)"),
-    })
-}
-
-fn need(v: Option<f64>, flag: &str) -> Result<f64, InputError> {
-    v.ok_or_else(|| InputError(format!("{flag}: required")))
-}
-
-/// The rheology inputs: `eyring-lss` needs `lambda_lss` and `tau_l0`, which mean nothing
-/// with another rheology.
-fn rheology(
-    rheology: Option<RheologyChoice>,
-    lambda_lss: Option<f64>,
-    tau_l0: Option<f64>,
-) -> Result<Option<Rheology>, InputError> {
-    Ok(match rheology {
-        Some(RheologyChoice::EyringLss) => Some(Rheology::EyringLss(LimitingShearStress {
-            lambda: need(lambda_lss, "--lambda-lss (with --rheology eyring-lss)")?,
-            tau_l0_pa: need(tau_l0, "--tau-l0 (with --rheology eyring-lss)")?,
-        })),
-        _ if lambda_lss.is_some() || tau_l0.is_some() => {
-            bail!("--lambda-lss and --tau-l0 need --rheology eyring-lss")
-        }
-        Some(RheologyChoice::Eyring) => Some(Rheology::Eyring),
-        Some(RheologyChoice::Newtonian) => Some(Rheology::Newtonian),
-        None => None,
-    })
-}
-
-/// The physics inputs over `defaults`.
-pub fn physics(
-    viscosity: Option<ViscosityLaw>,
-    density: Option<DensityLaw>,
-    rheology: Option<Rheology>,
-    defaults: Physics,
-) -> Physics {
-    Physics {
-        viscosity: viscosity.unwrap_or(defaults.viscosity),
-        density: density.unwrap_or(defaults.density),
-        rheology: rheology.unwrap_or(defaults.rheology),
-    }
+    ($flag:expr, $($t:tt)*) => { return Err(InputError::invalid($flag, format!($($t)*))) };
 }
 
 /// What `repro solve` takes, as plain data: a contact in Moes groups or physically, its
@@ -355,12 +155,12 @@ impl SolveInputs {
         let physical =
             physical_only || (!dimensionless && (self.ph.is_some() || self.eta0.is_some()));
         let spec = match (dimensionless, physical) {
-            (true, true) => bail!("--m/--l/--s-bar (dimensionless form) and --lubricant/--temperature/--alpha/--um/--tau0 or a datasheet (physical form) cannot be mixed"),
-            (false, false) => bail!("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help"),
+            (true, true) => return Err(InputError::Form("--m/--l/--s-bar (dimensionless form) and --lubricant/--temperature/--alpha/--um/--tau0 or a datasheet (physical form) cannot be mixed")),
+            (false, false) => return Err(InputError::Form("give a case: --m, --l, --s-bar (dimensionless) or --lubricant, --temperature, --ph, --um, --slip, --tau0 (physical); see --help")),
             (true, false) => CaseForm::Dimensionless(DimensionlessCase {
-                m: need(self.m, "--m")?,
-                l: need(self.l, "--l")?,
-                s_bar: need(self.s_bar, "--s-bar")?,
+                m: need(self.m, "m")?,
+                l: need(self.l, "l")?,
+                s_bar: need(self.s_bar, "s-bar")?,
                 d: self.d.unwrap_or(1.0),
                 slip: self.slip.unwrap_or(0.01),
                 eta0_pa_s: self.eta0,
@@ -368,10 +168,10 @@ impl SolveInputs {
             }),
             (false, true) => CaseForm::Physical(PhysicalCase {
                 lubricant: lubricant_spec(self.lubricant.as_deref(), self.temperature, self.alpha, self.eta0, &self.datasheet)?,
-                ph_pa: need(self.ph, "--ph")?,
-                um_m_s: need(self.um, "--um")?,
-                slip: need(self.slip, "--slip")?,
-                tau0_pa: need(self.tau0, "--tau0")?,
+                ph_pa: need(self.ph, "ph")?,
+                um_m_s: need(self.um, "um")?,
+                slip: need(self.slip, "slip")?,
+                tau0_pa: need(self.tau0, "tau0")?,
                 rx_m: self.rx,
                 ry_m: self.ry.unwrap_or(self.rx),
                 e_prime_pa: self.e_prime,
@@ -393,7 +193,7 @@ impl SolveInputs {
     pub fn params(&self, problem: &Problem) -> Result<point::Params, InputError> {
         let rule = point::Params::for_problem(
             problem,
-            check_level("--level", self.level.unwrap_or(WORKING_LEVEL))?,
+            check_level("level", self.level.unwrap_or(WORKING_LEVEL))?,
         );
         let mut params = point::Params {
             domain: self.domain.unwrap_or(rule.domain),
@@ -406,7 +206,8 @@ impl SolveInputs {
         if let Some(patch) = self.patch {
             if params.nested {
                 bail!(
-                    "--patch: the inlet patch is for the paper's and the heavy-load domains \
+                    "patch",
+                    "the inlet patch is for the paper's and the heavy-load domains \
                      (M from about 300 up), whose central film is made in the inlet; this \
                      case is solved on nested domains already (drop --patch)"
                 );
@@ -447,7 +248,8 @@ impl SolveInputs {
         let level = self.level.unwrap_or(line::Params::default().level);
         if !(line::MIN_LEVEL..=line::MAX_LEVEL).contains(&level) {
             bail!(
-                "--level: level {level} outside the line-contact range {}..={}",
+                "level",
+                "level {level} outside the line-contact range {}..={}",
                 line::MIN_LEVEL,
                 line::MAX_LEVEL
             );
@@ -462,19 +264,34 @@ impl SolveInputs {
     /// Inputs of the elliptical contact that a line contact cannot take.
     fn reject_point_flags(&self) -> Result<(), InputError> {
         if self.ry.is_some() {
-            bail!("--ry: a line contact has no Ry (it is infinite); drop --ry with --line");
+            bail!(
+                "ry",
+                "a line contact has no Ry (it is infinite); drop --ry with --line"
+            );
         }
         if self.d.is_some() {
-            bail!("--d: a line contact has D = Rx/Ry = 0; drop --d with --line");
+            bail!(
+                "d",
+                "a line contact has D = Rx/Ry = 0; drop --d with --line"
+            );
         }
         if self.domain.is_some() {
-            bail!("--domain: the line contact has its own domain (-4.5 <= X <= 1.5); drop --domain with --line");
+            bail!(
+                "domain",
+                "the line contact has its own domain (-4.5 <= X <= 1.5); drop --domain with --line"
+            );
         }
         if self.edge.is_some() {
-            bail!("--edge: the line contact has its own edge (P = 0); drop --edge with --line");
+            bail!(
+                "edge",
+                "the line contact has its own edge (P = 0); drop --edge with --line"
+            );
         }
         if self.patch.is_some() {
-            bail!("--patch: the composite grid is the point contact's; drop --patch with --line");
+            bail!(
+                "patch",
+                "the composite grid is the point contact's; drop --patch with --line"
+            );
         }
         Ok(())
     }
@@ -487,9 +304,9 @@ impl SolveInputs {
 
 /// The thermal post-process's inputs from the two conductivities, checked.
 pub fn thermal_inputs(k_solid: f64, k_lubricant: f64) -> Result<ThermalInputs, InputError> {
-    for (flag, v) in [("--k-solid", k_solid), ("--k-lubricant", k_lubricant)] {
+    for (flag, v) in [("k-solid", k_solid), ("k-lubricant", k_lubricant)] {
         if v.is_nan() || v <= 0.0 {
-            bail!("{flag}: a conductivity must be positive, got {v}");
+            bail!(flag, "a conductivity must be positive, got {v}");
         }
     }
     Ok(ThermalInputs {
