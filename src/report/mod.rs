@@ -267,6 +267,7 @@ mod tests {
             git_revision: "abc-dirty".into(),
             host: "vm".into(),
             seconds: 1.0,
+            revisions: None,
         };
         sidecar.add_rows("fig3.csv", [("key", Some(&stamp))]);
         let text = sidecar.to_json();
