@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod continuation;
+mod error_bracket;
 mod line_contact;
 mod lss;
 mod lubricant;
