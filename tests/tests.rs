@@ -3,6 +3,7 @@
 mod check;
 mod cli;
 mod continuation;
+mod csv_columns;
 mod error_bracket;
 mod line_contact;
 mod lss;
