@@ -4,6 +4,8 @@ mod browser;
 mod check;
 mod cli;
 mod continuation;
+mod csv_columns;
+mod error_bracket;
 mod line_contact;
 mod lss;
 mod lubricant;

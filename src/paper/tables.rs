@@ -5,7 +5,7 @@ use crate::paper::target::{Target, TargetReport};
 use crate::physics::case::{CaseForm, LubricantSpec, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::pipeline::context::Context;
-use crate::pipeline::csv::{num, rows};
+use crate::pipeline::csv::rows;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
 use serde::{Serialize, Serializer};
@@ -113,7 +113,9 @@ fn table1(ctx: &Context) -> Result<TargetReport, PipelineError> {
     ))
 }
 
-/// The range of a parameter over a sweep, written `min-max`.
+/// The range of a parameter over a sweep, written `min to max` with four significant digits
+/// (plain between 0.001 and 1e5, else in exponent form: `1 to 3`, `64.4 to 1.921e4`); `to`
+/// rather than a hyphen, which would read as a minus sign or run into an exponent.
 #[derive(Debug, Default, Clone, Copy)]
 struct Span(f64, f64);
 
@@ -129,7 +131,14 @@ impl Span {
 
 impl Serialize for Span {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(&format!("{}-{}", num(self.0), num(self.1)))
+        let text = |v: f64| {
+            if v == 0.0 || (1e-3..1e5).contains(&v.abs()) {
+                crate::plot::significant(v, 4)
+            } else {
+                format!("{v:.3e}")
+            }
+        };
+        s.serialize_str(&format!("{} to {}", text(self.0), text(self.1)))
     }
 }
 
@@ -140,7 +149,7 @@ struct Table2Row {
     ph_gpa: Span,
     temperature_c: &'static str,
     um_m_s: Span,
-    slip_percent: Span,
+    slip: Span,
     tau0_mpa: Span,
     m_min: f64,
     m_max: f64,
@@ -189,7 +198,7 @@ fn table2(ctx: &Context) -> Result<TargetReport, PipelineError> {
             ph_gpa: Span::of(phys.iter().map(|p| p.ph_pa / 1e9)),
             temperature_c: "40/60/100",
             um_m_s: Span::of(phys.iter().map(|p| p.um_m_s)),
-            slip_percent: Span::of(phys.iter().map(|p| p.slip * 100.0)),
+            slip: Span::of(phys.iter().map(|p| p.slip)),
             tau0_mpa: Span::of(phys.iter().map(|p| p.tau0_pa / 1e6)),
             m_min: m.0,
             m_max: m.1,
@@ -219,7 +228,7 @@ struct Table3Row {
     ph_gpa: f64,
     temperature_c: Option<f64>,
     um_m_s: f64,
-    slip_percent: f64,
+    slip: f64,
     tau0_mpa: f64,
     m: f64,
     l: f64,
@@ -241,7 +250,7 @@ fn table3(ctx: &Context) -> Result<TargetReport, PipelineError> {
                 ph_gpa: ph.ph_pa / 1e9,
                 temperature_c: ph.lubricant.temperature_c(),
                 um_m_s: ph.um_m_s,
-                slip_percent: ph.slip * 100.0,
+                slip: ph.slip,
                 tau0_mpa: ph.tau0_pa / 1e6,
                 m: p.groups.m,
                 l: p.groups.l,

@@ -82,6 +82,7 @@ pub fn line_key<C: Serialize>(case: &C, physics: &Physics, params: &line::Params
         (params.domain.x_start, params.domain.x_end),
         params.rolling_friction,
         params.require_positive_film,
+        params.refinement_levels,
         LINE_SOLVER_REVISION,
     ))
 }

@@ -2,12 +2,16 @@
 //! applied.
 
 use super::axes::{error_bar, plan_axis, to_plot, AxisPlan};
-use super::layout::{visible_pieces, Corner, Rect};
-use super::legend::{draw_legend, draw_notes, LegendRow, LegendSample};
+use super::check::Layout;
+use super::layout::{visible_pieces, Rect};
+use super::legend::{
+    axis_label_boxes, draw_legend, draw_notes, legend_rows, notes_size, title_box, wrap_notes,
+    MARGIN, MARGIN_RIGHT,
+};
 use super::marker::{BarEnd, ErrorBar, Glyph, Lines};
 use super::style::{
-    curve_color, drawing, font, series_color, DESC_PX, LEGEND_PAD, LEGEND_PX, LEGEND_SAMPLE,
-    MARKER_R, NOTE_PX, TICK_PX, TITLE_PX,
+    curve_color, curve_dashes, drawing, font, series_color, DESC_PX, MARKER_R, NOTE_PX, TICK_PX,
+    TITLE_PX,
 };
 use super::text::{apply_markup, text_width};
 use super::{Figure, PlotError, Rendered, Scale, HEIGHT, WIDTH};
@@ -156,20 +160,34 @@ pub fn render(fig: &Figure) -> Result<Rendered, PlotError> {
         ));
     }
 
-    let mut buf = String::new();
-    {
-        let root = SVGBackend::with_string(&mut buf, (WIDTH, HEIGHT)).into_drawing_area();
-        let data = Data {
-            series: &visible,
-            labels: &visible_labels,
-            bars: &visible_bars,
-            curves: &pieces,
+    let data = Data {
+        series: &visible,
+        labels: &visible_labels,
+        bars: &visible_bars,
+        curves: &pieces,
+    };
+    // Drawn with the legend and notes inside the plotting area, then again with the ones that
+    // cover data there outside it.
+    let once = |outside: Outside| -> Result<(String, Placement), PlotError> {
+        let mut buf = String::new();
+        let placement = {
+            let root = SVGBackend::with_string(&mut buf, (WIDTH, HEIGHT)).into_drawing_area();
+            let placement = draw(&root, fig, (&x_axis, &y_axis), &data, &notes, outside)?;
+            root.present().map_err(drawing)?;
+            placement
         };
-        draw(&root, fig, &x_axis, &y_axis, &data, &notes)?;
-        root.present().map_err(drawing)?;
+        Ok((buf, placement))
+    };
+    let (mut buf, mut placement) = once(Outside::default())?;
+    if placement.legend_crowded || placement.notes_crowded {
+        (buf, placement) = once(Outside {
+            legend: placement.legend_crowded,
+            notes: placement.notes_crowded,
+        })?;
     }
     Ok(Rendered {
         svg: apply_markup(&buf),
+        layout: placement.layout,
         skipped_points: prepared.skipped_points,
         outside_range,
         skipped_curve_points: prepared.skipped_curve_points,
@@ -185,14 +203,31 @@ struct Data<'a> {
     curves: &'a [Vec<Vec<(f64, f64)>>],
 }
 
+/// Where the legend and the notes go outside the plotting area: the legend to its right, the
+/// notes below the x axis's label (room is kept for them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+struct Outside {
+    legend: bool,
+    notes: bool,
+}
+
+/// What a drawing placed, and whether the legend or the notes, placed inside the plotting
+/// area, cover data there (then the figure is drawn again with them [`Outside`]).
+#[derive(Debug, Default)]
+struct Placement {
+    layout: Layout,
+    legend_crowded: bool,
+    notes_crowded: bool,
+}
+
 fn draw(
     root: &DrawingArea<SVGBackend<'_>, Shift>,
     fig: &Figure,
-    x_axis: &AxisPlan,
-    y_axis: &AxisPlan,
+    (x_axis, y_axis): (&AxisPlan, &AxisPlan),
     data: &Data<'_>,
     notes: &[String],
-) -> Result<(), PlotError> {
+    outside: Outside,
+) -> Result<Placement, PlotError> {
     let (series, curves) = (data.series, data.curves);
     root.fill(&WHITE).map_err(drawing)?;
 
@@ -204,11 +239,33 @@ fn draw(
     // Tick marks, tick labels, a gap, then the rotated axis label.
     let y_area = (widest_y_tick + 5.0 + 10.0 + DESC_PX * 1.6).ceil() as u32;
     let x_area = (TICK_PX * 1.6 + 10.0 + DESC_PX * 1.6).ceil() as u32;
+    let margin_right = MARGIN_RIGHT;
+    // The width below the chart, from the y axis to the right margin.
+    let band_w = WIDTH as i32 - y_area as i32 - MARGIN - margin_right;
+    let notes = wrap_notes(notes, band_w);
+    // Below the chart, bottom up: the notes, then the legend (the tallest it can be, with the
+    // error bars' row), where they go outside.
+    let band_notes = if outside.notes {
+        notes_size(&notes).1 + Rect::INSET
+    } else {
+        0
+    };
+    let band_legend = if outside.legend {
+        legend_rows(fig, series, true)
+            .in_columns(WIDTH as i32 - 2 * MARGIN)
+            .size()
+            .1
+            + Rect::INSET
+    } else {
+        0
+    };
+    let margin_bottom = MARGIN + band_notes + band_legend;
 
     let mut chart = ChartBuilder::on(root)
         .caption(&fig.title, font(TITLE_PX))
-        .margin(12)
-        .margin_right(28)
+        .margin(MARGIN)
+        .margin_right(margin_right)
+        .margin_bottom(margin_bottom)
         .x_label_area_size(x_area)
         .y_label_area_size(y_area)
         .build_cartesian_2d(x_axis.clone(), y_axis.clone())
@@ -233,14 +290,15 @@ fn draw(
         .draw()
         .map_err(drawing)?;
 
+    let dashes = curve_dashes(&fig.curves);
     for (i, pieces) in curves.iter().enumerate() {
         let style = ShapeStyle::from(&curve_color(i)).stroke_width(2);
-        if fig.curves[i].dashed {
+        if let Some((on, off)) = dashes[i] {
             chart
                 .draw_series(
                     pieces
                         .iter()
-                        .map(|p| DashedPathElement::new(p.clone(), 9, 6, style)),
+                        .map(|p| DashedPathElement::new(p.clone(), on, off, style)),
                 )
                 .map_err(drawing)?;
         } else {
@@ -293,8 +351,21 @@ fn draw(
             .map_err(drawing)?;
         }
     }
+    let mut label_boxes = Vec::new();
     for (i, pts) in series.iter().enumerate() {
         let (marker, color) = (fig.series[i].marker, series_color(i));
+        for (&at, l) in pts.iter().zip(&data.labels[i]) {
+            if !l.is_empty() {
+                let (x, y) = chart.backend_coord(&at);
+                let (x0, y0) = (x + MARKER_R + 2, y - (MARKER_R + 2));
+                label_boxes.push(Rect {
+                    x0,
+                    x1: x0 + text_width(l, NOTE_PX).ceil() as i32,
+                    y0,
+                    y1: y0 + (NOTE_PX * 1.2).ceil() as i32,
+                });
+            }
+        }
         if fig.series[i].joined && pts.len() > 1 {
             let style = ShapeStyle::from(&color).stroke_width(1);
             chart
@@ -322,7 +393,6 @@ fn draw(
             .map_err(drawing)?;
     }
 
-    // Legend and notes go into the emptiest corners of the plotting area.
     let pixel_points: Vec<(i32, i32)> = series
         .iter()
         .flatten()
@@ -350,59 +420,69 @@ fn draw(
             .count();
         points + bars + 5 * lines
     };
-
-    let legend_rows: Vec<LegendRow> = fig
-        .series
-        .iter()
-        .enumerate()
-        .map(|(i, s)| LegendRow {
-            label: s.label.clone(),
-            sample: LegendSample::Marker(s.marker, series_color(i)),
-        })
-        .chain(fig.curves.iter().enumerate().map(|(i, c)| LegendRow {
-            label: c.label.clone(),
-            sample: LegendSample::Line(c.dashed, curve_color(i)),
-        }))
-        .filter(|r| !r.label.is_empty())
-        .collect();
-    let row_h = (LEGEND_PX * 1.5).round() as i32;
-    let legend_size = (
-        LEGEND_SAMPLE
-            + 3 * LEGEND_PAD
-            + legend_rows
-                .iter()
-                .map(|r| text_width(&r.label, LEGEND_PX).ceil() as i32)
-                .max()
-                .unwrap_or(0),
-        legend_rows.len() as i32 * row_h + LEGEND_PAD,
-    );
-    let note_size = (
-        notes
-            .iter()
-            .map(|n| text_width(n, NOTE_PX).ceil() as i32)
-            .max()
-            .unwrap_or(0)
-            + 2 * LEGEND_PAD,
-        notes.len() as i32 * (NOTE_PX * 1.4).round() as i32 + LEGEND_PAD,
-    );
-
-    let mut taken: Option<Corner> = None;
-    if !legend_rows.is_empty() {
-        let corner = area.emptiest_corner(legend_size, None, &crowding);
-        taken = Some(corner);
-        draw_legend(root, area.place(corner, legend_size), &legend_rows, row_h)?;
+    let has_bars = bar_lines.iter().any(|l| !l.is_empty());
+    let legend = legend_rows(fig, series, has_bars);
+    let legend = if outside.legend {
+        legend.in_columns(WIDTH as i32 - 2 * MARGIN)
+    } else {
+        legend
+    };
+    let legend_size = legend.size();
+    let mut placement = Placement {
+        layout: Layout {
+            title: Some(title_box(fig, margin_right)),
+            axis_labels: axis_label_boxes(fig, &area, x_area as i32),
+            markers: pixel_points.clone(),
+            labels: label_boxes,
+            ..Layout::default()
+        },
+        ..Placement::default()
+    };
+    // Legend and notes go into the emptiest corners of the plotting area; where the emptiest
+    // is not empty, outside it (the caller draws again with room kept: [`Outside`]).
+    let notes = &notes[..];
+    if !legend.rows.is_empty() {
+        let rect = if outside.legend {
+            let y1 = HEIGHT as i32 - Rect::INSET / 2 - band_notes;
+            let x0 = (WIDTH as i32 - legend_size.0) / 2;
+            Rect {
+                x0,
+                x1: x0 + legend_size.0,
+                y0: y1 - legend_size.1,
+                y1,
+            }
+        } else {
+            let rect = area.emptiest_place(legend_size, None, &crowding);
+            placement.legend_crowded = crowding(&rect) > 0;
+            rect
+        };
+        draw_legend(root, rect, &legend)?;
+        placement.layout.legend = Some(rect);
     }
     if !notes.is_empty() {
+        let note_size = notes_size(notes);
         let has_data = series.iter().any(|s| !s.is_empty());
-        let rect = if has_data {
-            let corner = area.emptiest_corner(note_size, taken, &crowding);
-            area.place(corner, note_size)
+        let rect = if outside.notes {
+            let y1 = HEIGHT as i32 - Rect::INSET / 2;
+            Rect {
+                x0: area.x0,
+                x1: area.x0 + note_size.0,
+                y0: y1 - note_size.1,
+                y1,
+            }
+        } else if has_data {
+            let rect = area.emptiest_place(note_size, placement.layout.legend, &crowding);
+            placement.notes_crowded = crowding(&rect) > 0
+                || placement.layout.legend.is_some_and(|l| l.overlaps(&rect))
+                || rect.x0 < area.x0;
+            rect
         } else {
             area.centred(note_size)
         };
         draw_notes(root, rect, notes)?;
+        placement.layout.notes = Some(rect);
     }
-    Ok(())
+    Ok(placement)
 }
 
 #[cfg(test)]

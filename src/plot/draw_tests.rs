@@ -430,3 +430,50 @@ fn error_bar_strokes_follow_the_marker_radius() {
         ]
     );
 }
+
+/// A Fig. 6-like figure: data along the diagonal from the lower left to the upper right and a
+/// cloud at the upper left, five series with error bars, and a note longer than the plot is
+/// wide.
+fn crowded() -> Figure {
+    let mut fig = sample();
+    let cloud: Vec<(f64, f64)> = (0..30)
+        .flat_map(|i| (0..6).map(move |j| (0.1 * 1.2f64.powi(i), 3.0 + 0.1 * f64::from(j))))
+        .collect();
+    for k in 0..3 {
+        fig.series.push(Series {
+            label: format!("series {k} with a longer label"),
+            points: cloud
+                .iter()
+                .map(|&(x, y)| (x * 1.1f64.powi(k), y))
+                .collect(),
+            marker: Marker::nth(k as usize),
+            y_errors: vec![0.4; cloud.len()],
+            ..Series::default()
+        });
+    }
+    fig.note = Some(
+        "\"paper's setup\": P = 0 on the paper's domain, Eq. (8) over it, for the 173 cases \
+         where it differs from the flooded contact by more than the error bar"
+            .into(),
+    );
+    fig
+}
+
+#[test]
+fn a_crowded_figure_keeps_its_text_clear_of_data_and_of_each_other() {
+    let r = render(&crowded()).expect("renders");
+    assert_eq!(r.layout.problems(), Vec::<String>::new());
+    // The legend names the error bars; the long note was wrapped onto lines.
+    assert!(r.svg.contains("estimated discretisation error"));
+    assert!(r.layout.notes.is_some_and(|n| n.x1 < WIDTH as i32));
+    // Every figure of this module's tests lays out cleanly too.
+    for fig in [
+        sample(),
+        one_point(Scale::Linear, (0.0, 10.0), 5.0, vec![2.0]),
+    ] {
+        assert_eq!(
+            render(&fig).unwrap().layout.problems(),
+            Vec::<String>::new()
+        );
+    }
+}

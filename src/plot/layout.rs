@@ -88,12 +88,16 @@ pub(super) fn visible_pieces(
 }
 
 /// A pixel rectangle, x0 < x1 and y0 < y1 (y grows downwards).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) struct Rect {
-    pub(super) x0: i32,
-    pub(super) x1: i32,
-    pub(super) y0: i32,
-    pub(super) y1: i32,
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Rect {
+    /// Left edge.
+    pub x0: i32,
+    /// Right edge.
+    pub x1: i32,
+    /// Top edge.
+    pub y0: i32,
+    /// Bottom edge.
+    pub y1: i32,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -106,6 +110,8 @@ pub(super) enum Corner {
 
 impl Rect {
     pub(super) const INSET: i32 = 10;
+    /// The step of the positions [`Rect::emptiest_place`] tries beyond the corners, pixels.
+    pub(super) const SCAN_STEP: i32 = 10;
 
     pub(super) fn grow(&self, by: i32) -> Rect {
         Rect {
@@ -114,6 +120,16 @@ impl Rect {
             y0: self.y0 - by,
             y1: self.y1 + by,
         }
+    }
+
+    /// Whether `other` lies wholly inside.
+    pub(super) fn holds(&self, other: &Rect) -> bool {
+        other.x0 >= self.x0 && other.x1 <= self.x1 && other.y0 >= self.y0 && other.y1 <= self.y1
+    }
+
+    /// Whether the two share more than an edge.
+    pub(super) fn overlaps(&self, other: &Rect) -> bool {
+        self.x0 < other.x1 && other.x0 < self.x1 && self.y0 < other.y1 && other.y0 < self.y1
     }
 
     pub(super) fn contains(&self, (x, y): (i32, i32)) -> bool {
@@ -162,22 +178,52 @@ impl Rect {
         }
     }
 
-    /// The corner where a box of `size` covers the fewest data (ties: upper left first).
-    pub(super) fn emptiest_corner(
+    /// Where a box of `size` covers the fewest data and does not meet `avoid`: the four
+    /// corners first (ties: upper left first), then every position on a grid of
+    /// [`Self::SCAN_STEP`] pixels over the area (as matplotlib's `loc="best"` tries its
+    /// positions), the first empty one in reading order; the corner with the fewest where
+    /// none is empty.
+    pub(super) fn emptiest_place(
         &self,
         size: (i32, i32),
-        exclude: Option<Corner>,
+        avoid: Option<Rect>,
         crowding: &dyn Fn(&Rect) -> usize,
-    ) -> Corner {
-        [
+    ) -> Rect {
+        let blocked = |r: &Rect| avoid.is_some_and(|a| a.grow(Self::INSET / 2).overlaps(r));
+        let cost = |r: &Rect| crowding(r) + if blocked(r) { usize::MAX / 2 } else { 0 };
+        let corners = [
             Corner::UpperLeft,
             Corner::UpperRight,
             Corner::LowerRight,
             Corner::LowerLeft,
         ]
-        .into_iter()
-        .filter(|c| Some(*c) != exclude)
-        .min_by_key(|c| crowding(&self.place(*c, size)))
-        .unwrap_or(Corner::UpperLeft)
+        .map(|c| self.place(c, size));
+        let best_corner = corners
+            .into_iter()
+            .min_by_key(|r| cost(r))
+            .unwrap_or_else(|| self.place(Corner::UpperLeft, size));
+        if cost(&best_corner) == 0 {
+            return best_corner;
+        }
+        let (x_lo, x_hi) = (self.x0 + Self::INSET, self.x1 - Self::INSET - size.0);
+        let (y_lo, y_hi) = (self.y0 + Self::INSET, self.y1 - Self::INSET - size.1);
+        let mut y = y_lo;
+        while y <= y_hi {
+            let mut x = x_lo;
+            while x <= x_hi {
+                let r = Rect {
+                    x0: x,
+                    x1: x + size.0,
+                    y0: y,
+                    y1: y + size.1,
+                };
+                if cost(&r) == 0 {
+                    return r;
+                }
+                x += Self::SCAN_STEP;
+            }
+            y += Self::SCAN_STEP;
+        }
+        best_corner
     }
 }

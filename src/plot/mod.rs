@@ -44,6 +44,7 @@
 //! `marker`, `legend`, `style` and `text` beneath it.
 
 mod axes;
+mod check;
 mod draw;
 mod layout;
 mod legend;
@@ -51,7 +52,9 @@ mod marker;
 mod style;
 mod text;
 
+pub use check::Layout;
 pub use draw::{render, render_svg};
+pub use layout::Rect;
 pub use text::{significant, text_width};
 
 /// Canvas width in pixels.
@@ -192,4 +195,6 @@ pub struct Rendered {
     pub outside_range: usize,
     /// Curve points dropped for the same reasons as `skipped_points` (the curve is broken there).
     pub skipped_curve_points: usize,
+    /// Where its text boxes and markers went ([`Layout::problems`] says what is wrong).
+    pub layout: Layout,
 }

@@ -118,6 +118,13 @@ pub enum LadderStop {
         /// The level.
         level: u32,
     },
+    /// Its central film is open but less than half the finest level's: a film its mesh does
+    /// not resolve, outside the asymptotic range (the line contact's ladder,
+    /// [`crate::solver::line`]).
+    FilmUnresolved {
+        /// The level.
+        level: u32,
+    },
 }
 
 impl OutputErrors {

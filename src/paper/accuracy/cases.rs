@@ -150,6 +150,15 @@ pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
     params
 }
 
+/// The line solver's rule ([`line::Params::for_problem`]) without its refinement, for the
+/// same reason as [`pipeline_params`].
+pub fn line_pipeline_params(problem: &LineProblem, level: u32) -> line::Params {
+    line::Params {
+        refinement_levels: 0,
+        ..line::Params::for_problem(problem, level)
+    }
+}
+
 /// The first physical case of the shipped sweep `sweep` that `matches`; `what` names it in
 /// the error when there is none.
 fn shipped_physical_case(
@@ -281,7 +290,7 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
             level_offset: 2,
             contact: AccuracyProblem::Line {
                 problem: Box::new(problem),
-                params: line::Params::for_problem,
+                params: line_pipeline_params,
             },
         });
     }

@@ -20,7 +20,13 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
                 .filter_map(|r| Some(((r.seconds, s.errors(r)?.1), format!("L{}", r.level))))
                 .unzip();
             Series {
-                label: format!("{} ({} contact)", s.name, s.kind),
+                // Point contacts by name alone (most are), the others with their kind: a short
+                // label keeps the legend in columns below the chart where it cannot sit inside.
+                label: if s.kind == "point" {
+                    s.name.to_string()
+                } else {
+                    format!("{} ({} contact)", s.name, s.kind)
+                },
                 points,
                 marker: Marker::nth(i),
                 joined: true,

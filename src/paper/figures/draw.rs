@@ -5,7 +5,7 @@
 use super::plot::{FrictionAxis, Plot, SeriesBy};
 use super::run::{run_sweep, selection};
 use super::{picture, rows};
-use crate::paper::mastercurve::fit::Fit;
+use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
 use crate::paper::target::{eq13_regime_fit, Measure, TargetReport};
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
@@ -13,7 +13,7 @@ use crate::pipeline::executor::{run_cases_in, PointRun, RunProgress};
 use crate::pipeline::job::Setup;
 use crate::pipeline::outcome::CaseOutcome;
 use crate::pipeline::sweep::Sweep;
-use crate::plot::{Marker, Series};
+use crate::plot::{Marker, Scale, Series};
 
 /// How a sweep is drawn: a figure of the paper ([`super::SweepFigure::drawing`]) or a user's
 /// study ([`super::study`]).
@@ -30,36 +30,56 @@ pub struct Drawing<'a> {
     pub default_level: Option<u32>,
     /// Series drawn and measured against Eq. (13) with its cases (Fig. 7's line contacts).
     pub fitted: Vec<Series>,
-    /// Also solve the cases in the paper's setup and draw them where they differ
-    /// ([`super::SweepFigure::paper_setup`]); not measured.
+    /// Also solve the cases in the paper's setup and draw them, every case, as a series of
+    /// their own ([`super::SweepFigure::paper_setup`]), with their own Eq. (13) statistics.
     pub paper_setup: bool,
+    /// The friction axis's scale ([`super::SweepFigure::friction_scale`]).
+    pub friction_scale: Scale,
 }
 
-/// The cases of `paper` (the paper's setup) whose plotted friction differs from the rule's
-/// solve of the same case (`runs`, in the same order) by more than its error bar (or, where
-/// not estimated, by more than 1 %), as one series, and how many they are.
+/// The cases of `paper` (the paper's setup: `P = 0` on its domain, Eq. (8) over it) as one
+/// series, every solved case with its error bar, and how many of them differ from the rule's
+/// solve of the same case (`runs`, in the same order) by more than the larger of the two
+/// error bars (or, where neither is estimated, by more than 1 %).
 fn paper_setup_series(runs: &[PointRun], paper: &[PointRun], plot: Plot) -> (Series, usize) {
-    let points: Vec<(f64, f64)> = runs
-        .iter()
-        .zip(paper)
-        .filter_map(|(r, p)| {
-            let (x, y) = plot.xy(r)?;
-            let (_, y_paper) = plot.xy(p)?;
-            let bar = r
-                .solved()
-                .and_then(|s| plot.y_error(s))
-                .unwrap_or(0.01 * y.abs());
-            ((y_paper - y).abs() > bar).then_some((x, y_paper))
-        })
-        .collect();
-    let shown = points.len();
-    let series = Series {
-        label: "paper's setup (P = 0, its domain)".into(),
-        points,
-        marker: Marker::Circle,
+    let mut series = Series {
+        label: "paper's setup (P = 0 on its domain)".into(),
+        marker: Marker::Cross,
         ..Series::default()
     };
-    (series, shown)
+    let mut differ = 0;
+    for (r, p) in runs.iter().zip(paper) {
+        let Some((x, y_paper)) = plot.xy(p) else {
+            continue;
+        };
+        let bar = |run: &PointRun| run.solved().and_then(|s| plot.y_error(s));
+        series.points.push((x, y_paper));
+        series.y_errors.push(bar(p).unwrap_or(0.0));
+        if let Some((_, y)) = plot.xy(r) {
+            let allowed = match (bar(r), bar(p)) {
+                (Some(a), Some(b)) => a.max(b),
+                (a, b) => a.or(b).unwrap_or(0.01 * y.abs()),
+            };
+            differ += usize::from((y_paper - y).abs() > allowed);
+        }
+    }
+    (series, differ)
+}
+
+/// Eq. (13)'s statistics of `points` in a few words for a figure's note.
+fn eq13_words(points: &[(f64, f64)]) -> String {
+    let in_range: Vec<(f64, f64)> = points
+        .iter()
+        .copied()
+        .filter(|p| p.0 >= FIT_TAU_C_MIN)
+        .collect();
+    match crate::paper::mastercurve::fit::fit(&in_range) {
+        Some(f) => format!(
+            "off Eq. (13) by {:.2} RMS, {:.2} at most (μ̄ units, τ̄_{{c}} ≥ {FIT_TAU_C_MIN})",
+            f.rms_abs_dev, f.max_abs_dev
+        ),
+        None => "not measured against Eq. (13)".into(),
+    }
 }
 
 /// Runs `sweep` at the context's level (else the sweep's, else the drawing's), writes
@@ -128,10 +148,13 @@ pub fn sweep_figure(
         if plot.on_eq13() {
             measures.extend(eq13_regime_fit(&paper_points).map(Measure::PaperSetupEq13));
         }
-        let (series, shown) = paper_setup_series(&runs, &paper, plot);
+        let (series, differ) = paper_setup_series(&runs, &paper, plot);
         note = Some(format!(
-            "\"paper's setup\": P = 0 on the paper's domain, Eq. (8) over it, for the {shown} \
-             cases where it differs from the flooded contact by more than the error bar"
+            "flooded contact (the rule's far field): {}; paper's setup (P = 0 on the paper's \
+             domain, Eq. (8) over it): {}; {differ} of {} cases differ by more than the error bar",
+            eq13_words(&points),
+            eq13_words(&series.points),
+            series.points.len()
         ));
         drawn.push(series);
     }
@@ -139,7 +162,7 @@ pub fn sweep_figure(
         stem,
         &format!("{heading} — {}", sweep.title),
         &runs,
-        (plot, drawing.series),
+        (plot, drawing.series, drawing.friction_scale),
         (&drawn, note),
     )? {
         files.push(ctx.write(&format!("{stem}.svg"), &svg)?);

@@ -134,15 +134,18 @@ struct LineRow {
     rel_dev_flat: Option<f64>,
     cycles: Option<usize>,
     /// Relative discretisation errors and the extrapolated sliding `mu-bar`
-    /// ([`crate::solver::richardson`], from levels `level - 2` to `level`).
+    /// ([`crate::solver::richardson`]), and the levels the estimate read (up to `level - 2`
+    /// to `level`; fewer where a coarser level is outside the asymptotic range).
     hc_rel_error: Option<f64>,
     hmin_rel_error: Option<f64>,
     mu_bar_sliding_rel_error: Option<f64>,
     mu_bar_sliding_extrapolated: Option<f64>,
+    error_levels: String,
     status: String,
 }
 
-/// `fig7-line.csv`: one row per line contact solved at `level`.
+/// `fig7-line.csv`: one row per line contact asked for at `level` (each row names the level
+/// it was solved on: a finer one where its error estimate needed it).
 pub fn line_csv(runs: &[LineRun], level: u32) -> String {
     rows(runs.iter().enumerate().map(|(i, r)| {
         let g = &r.problem.groups;
@@ -167,7 +170,9 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
         match r.outcome.solved() {
             Some(s) => {
                 let flat = line_flat(&r.problem, s.h_central);
+                let levels = s.errors.as_ref().map_or(&[][..], |e| e.levels.as_slice());
                 LineRow {
+                    level: s.level,
                     hc: Some(s.h_central),
                     hc_moes: Some(s.hc_moes),
                     hmin_moes: Some(s.hmin_moes),
@@ -182,6 +187,10 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                     mu_bar_sliding_extrapolated: s
                         .estimate(Output::MuBarSliding)
                         .map(|e| e.extrapolated),
+                    error_levels: match (levels.first(), levels.last()) {
+                        (Some(a), Some(b)) => format!("{}-{}", a.level, b.level),
+                        _ => String::new(),
+                    },
                     ..row
                 }
             }

@@ -48,6 +48,7 @@ impl SweepFigure {
             default_level: Some(self.level),
             fitted,
             paper_setup: self.paper_setup,
+            friction_scale: self.friction_scale,
         }
     }
 }
@@ -147,6 +148,7 @@ pub fn study(stem: &str, sweep: &Sweep, ctx: &Context) -> Result<TargetReport, P
         default_level: None,
         fitted: Vec::new(),
         paper_setup: false,
+        friction_scale: crate::plot::Scale::Linear,
     };
     let (mut report, runs) = sweep_figure(&drawing, sweep, ctx)?;
     write_provenance(stem, &mut report, &runs, None, ctx)?;

@@ -1,5 +1,5 @@
-//! The pictures of the computed figures, in the paper's form: Fig. 1 on a log `x` axis,
-//! Figs. 2-7 `mu-bar` against `tau_c` on log-linear axes with Eq. (13) dashed. Series are split
+//! The pictures of the computed figures, in the paper's form: Figs. 1-3 on log-log axes,
+//! Figs. 4-7 `mu-bar` against `tau_c` on log-linear axes, Eq. (13) dashed from Fig. 2 on. Series are split
 //! as the figure says ([`SeriesBy`]) so that the collapse (or not) is visible.
 
 use super::plot::{Plot, SeriesBy};
@@ -25,7 +25,7 @@ pub fn svg(
     name: &str,
     title: &str,
     runs: &[PointRun],
-    (plot, series_by): (Plot, SeriesBy),
+    (plot, series_by, y_scale): (Plot, SeriesBy, Scale),
     (extra, beside_note): (&[Series], Option<String>),
 ) -> Result<Option<String>, PipelineError> {
     let mut keys: Vec<String> = Vec::new();
@@ -86,7 +86,7 @@ pub fn svg(
         x_label: x_label.into(),
         y_label: y_label.into(),
         x_scale: Scale::Log,
-        y_scale: Scale::Linear,
+        y_scale,
         x_range: None,
         y_range: None,
         series,

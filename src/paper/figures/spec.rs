@@ -5,6 +5,7 @@
 
 use super::plot::{Abscissa, FrictionAxis, Plot, SeriesBy};
 use crate::paper::target::{sweep_file, ShippedSweep};
+use crate::plot::Scale;
 
 /// The claim of the figures of sliding friction (Figs. 3-7 and a user's study).
 pub const SLIDING_CLAIM: &str = "sliding mu-bar follows Eq. (13): mu-bar = asinh(tau_c / 5)";
@@ -30,9 +31,13 @@ pub struct SweepFigure {
     pub claim: &'static str,
     /// Adds the line contacts of Table 3 (Fig. 7).
     pub line_contacts: bool,
-    /// Draws beside its cases the paper's setup ([`crate::pipeline::job::Setup::Paper`])
-    /// where it differs from the rule's by more than the error bar (Fig. 6).
+    /// Draws beside its cases the paper's setup ([`crate::pipeline::job::Setup::Paper`]),
+    /// every case as the paper computed it, a series of its own with its own Eq. (13)
+    /// statistics (Fig. 6).
     pub paper_setup: bool,
+    /// The friction axis's scale: the paper's Figs. 1-3 are log-log, Figs. 4-7 log-linear
+    /// (its text: Figs. 4-6 "now" use a log-linear scale).
+    pub friction_scale: Scale,
 }
 
 /// Fig. 1: total friction against the paper's severity group.
@@ -51,6 +56,7 @@ pub const FIG1: SweepFigure = SweepFigure {
     claim: "friction collapses on one curve for S-bar^(1/4) M L^3 >= 1e4, scattered below",
     line_contacts: false,
     paper_setup: false,
+    friction_scale: Scale::Log,
 };
 
 /// Fig. 2: total friction against `tau_c`.
@@ -85,6 +91,7 @@ pub const FIG4: SweepFigure = SweepFigure {
     sweep: sweep_file!("fig4"),
     series: SeriesBy::Temperature,
     level: 7,
+    friction_scale: Scale::Linear,
     ..FIG3
 };
 
@@ -116,6 +123,7 @@ pub const FIG7: SweepFigure = SweepFigure {
     series: SeriesBy::RadiusRatio,
     level: 7,
     line_contacts: true,
+    friction_scale: Scale::Linear,
     ..FIG3
 };
 

@@ -136,6 +136,11 @@ impl SolveReport<'_> {
             Some(LadderStop::NotConverged { level }) => {
                 levels += &format!(", level {level} not read: it did not converge")
             }
+            Some(LadderStop::FilmUnresolved { level }) => {
+                levels += &format!(
+                    ", level {level} not read: its central film is under half the finest's"
+                )
+            }
             None => {}
         }
         format!(

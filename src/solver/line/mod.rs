@@ -31,6 +31,7 @@
 
 mod friction;
 mod kernel;
+mod ladder;
 mod level;
 mod newton;
 mod transfer;
@@ -46,7 +47,7 @@ use std::time::Instant;
 
 /// Revision of the line-contact numerics: part of every line-contact cache key, bumped
 /// whenever a change can move a result.
-pub const SOLVER_REVISION: &str = "line-4";
+pub const SOLVER_REVISION: &str = "line-5";
 
 /// Highest level the solver accepts (8192 intervals: a dense Jacobian of 0.5 GB).
 pub const MAX_LEVEL: u32 = 12;
@@ -100,7 +101,17 @@ pub struct Params {
     /// Fail with [`SolveError::FilmCollapse`] when the minimum film is not positive.
     /// Default true.
     pub require_positive_film: bool,
+    /// Finer levels the solve may add, one at a time, while its error estimate reads fewer
+    /// than three levels inside the asymptotic range ([`ladder`]). The level solved on is
+    /// reported in [`Info::level`]. Default 0 (studies of the numerics solve the level they
+    /// are given); the rule sets [`RULE_REFINEMENT_LEVELS`].
+    pub refinement_levels: u32,
 }
+
+/// The rule's [`Params::refinement_levels`]: two, which Fig. 7's line contact 2 needs at
+/// level 8 (its levels 6 and 7 are outside the asymptotic range, level 8 is the first of
+/// three inside it); a level costs four times the one below (level 10: 2-3 s).
+pub const RULE_REFINEMENT_LEVELS: u32 = 2;
 
 impl Default for Params {
     fn default() -> Self {
@@ -113,6 +124,7 @@ impl Default for Params {
             load_tolerance: 1e-8,
             rolling_friction: true,
             require_positive_film: true,
+            refinement_levels: 0,
         }
     }
 }
@@ -133,7 +145,9 @@ impl Params {
     /// at `level`.
     ///
     /// The nested iteration starts [`ERROR_LEVELS`] below `level` where the default start is
-    /// closer: the levels it converges on the way are the error estimate's.
+    /// closer: the levels it converges on the way are the error estimate's; where fewer than
+    /// three of them are inside the asymptotic range the solve goes on to finer levels, up to
+    /// [`RULE_REFINEMENT_LEVELS`] ([`ladder`]).
     pub fn for_problem(_problem: &LineProblem, level: u32) -> Self {
         let defaults = Params::at_level(level);
         Params {
@@ -141,6 +155,7 @@ impl Params {
                 .start_level
                 .min(level.saturating_sub(ERROR_LEVELS))
                 .max(MIN_LEVEL),
+            refinement_levels: RULE_REFINEMENT_LEVELS,
             ..defaults
         }
     }
@@ -167,8 +182,9 @@ pub struct LineSolution {
     /// Convergence information.
     pub info: Info,
     /// The outputs' discretisation error, from the finest level and the two below it, which
-    /// the grid sequence converges on the way ([`crate::solver::richardson`]); `None` where
-    /// the sequence started less than two levels below.
+    /// the grid sequence converges on the way, where they are inside the asymptotic range
+    /// ([`ladder`], [`crate::solver::richardson`]); `None` where the sequence started less
+    /// than two levels below.
     pub errors: Option<OutputErrors>,
 }
 
@@ -227,16 +243,17 @@ pub fn solve(
     for i in 0..=level.n {
         level.p[i] = LineHertz::pressure(level.x(i));
     }
-    let mut history = Vec::new();
+    let mut history: Vec<f64>;
     // Every converged level's outputs, for the error estimate.
     let mut ladder = Vec::new();
-    for lv in first..=params.level {
+    let last = (params.level + params.refinement_levels).min(MAX_LEVEL);
+    let mut lv = first;
+    let errors = loop {
         if lv > first {
             let mut fine = LineLevelFields::new(1usize << (lv + 1), d.x_start, d.x_end);
             transfer::interpolate_solution(&level, &mut fine);
             level = fine;
         }
-        let finest = lv == params.level;
         let mut level_history = Vec::new();
         let mut non_finite = false;
         let mut diverged = false;
@@ -291,12 +308,15 @@ pub fn solve(
                 residual_history: history,
             });
         }
-        let _ = finest;
         ladder.push(values(&level, &model, lv));
-    }
-    let estimated = ERROR_LEVELS as usize + 1;
-    let errors = (ladder.len() >= estimated)
-        .then(|| OutputErrors::of(ladder[ladder.len() - estimated..].to_vec(), 0.0));
+        if lv >= params.level {
+            let errors = ladder::errors(&ladder, 0.0);
+            if lv == last || ladder::complete(errors.as_ref()) {
+                break errors;
+            }
+        }
+        lv += 1;
+    };
     let fine = &level;
     let load_error = ((fine.load() - LOAD) / LOAD).abs();
     let cycles = history.len();
@@ -304,7 +324,7 @@ pub fn solve(
     if params.require_positive_film && film.h_min <= 0.0 {
         return Err(SolveError::FilmCollapse {
             h_min: film.h_min,
-            level: params.level,
+            level: lv,
             level_needed: None,
             finest_level: MAX_LEVEL,
             cycle: cycles,
@@ -328,7 +348,7 @@ pub fn solve(
         friction,
         tau_m: friction::mean_shear_stress(fine, &model),
         info: Info {
-            level: params.level,
+            level: lv,
             method: Method::Newton,
             newton_steps: 0,
             krylov_iterations: 0,
