@@ -44,6 +44,9 @@ pub struct Inventory {
     pub corrupt: Vec<(String, u64)>,
     /// Temporary files of writes that never finished (older than [`ABANDONED_WRITE_AGE`]).
     pub abandoned: Vec<(PathBuf, u64)>,
+    /// Every file the present revisions cannot reach, with its size: the entries of other
+    /// revisions, unrecorded and corrupt ones, and the abandoned writes.
+    unreachable_files: Vec<(PathBuf, u64)>,
 }
 
 impl Inventory {
@@ -58,15 +61,8 @@ impl Inventory {
     /// corrupt entries and abandoned writes.
     pub fn unreachable(&self) -> Share {
         let mut out = Share::default();
-        for (r, s) in &self.by_revisions {
-            if !Self::reachable(r) {
-                out.entries += s.entries;
-                out.bytes += s.bytes;
-            }
-        }
-        let corrupt = self.corrupt.iter().map(|c| c.1);
-        for bytes in corrupt.chain(self.abandoned.iter().map(|a| a.1)) {
-            out.add(bytes);
+        for (_, bytes) in &self.unreachable_files {
+            out.add(*bytes);
         }
         out
     }
@@ -120,16 +116,25 @@ fn inventory_aged(cache: &Cache, age: Duration) -> Result<Inventory, PipelineErr
         abandoned: abandoned_writes(cache, age),
         ..Inventory::default()
     };
+    inv.unreachable_files.clone_from(&inv.abandoned);
     for key in cache.keys()? {
-        let bytes = size(&cache.path(&key));
-        match cache.get_raw(&key) {
-            Ok(Some(entry)) => inv
-                .by_revisions
-                .entry(entry.stamp.and_then(|s| s.revisions))
-                .or_default()
-                .add(bytes),
-            Ok(None) => {}
-            Err(_) => inv.corrupt.push((key, bytes)),
+        let path = cache.path(&key);
+        let bytes = size(&path);
+        let reachable = match cache.get_raw(&key) {
+            Ok(Some(entry)) => {
+                let revisions = entry.stamp.and_then(|s| s.revisions);
+                let reachable = Inventory::reachable(&revisions);
+                inv.by_revisions.entry(revisions).or_default().add(bytes);
+                reachable
+            }
+            Ok(None) => true,
+            Err(_) => {
+                inv.corrupt.push((key, bytes));
+                false
+            }
+        };
+        if !reachable {
+            inv.unreachable_files.push((path, bytes));
         }
     }
     Ok(inv)
@@ -155,19 +160,8 @@ fn prune_aged(cache: &Cache, age: Duration) -> Result<Share, PipelineError> {
             e,
         )),
     };
-    for (path, bytes) in abandoned_writes(cache, age) {
+    for (path, bytes) in inventory_aged(cache, age)?.unreachable_files {
         remove(&path, bytes)?;
-    }
-    for key in cache.keys()? {
-        let path = cache.path(&key);
-        let reachable = match cache.get_raw(&key) {
-            Ok(Some(entry)) => Inventory::reachable(&entry.stamp.and_then(|s| s.revisions)),
-            Ok(None) => true,
-            Err(_) => false,
-        };
-        if !reachable {
-            remove(&path, size(&path))?;
-        }
     }
     Ok(removed)
 }
