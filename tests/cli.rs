@@ -22,6 +22,40 @@ fn solve_json_has_every_documented_key() {
     assert!((v["m"].as_f64().unwrap() - 100.0).abs() < 1e-9);
 }
 
+/// `--exact-level` solves the level given and no other: the case above at level 6, whose
+/// friction estimate (levels 5-6, 3.5 %) misses the target and takes it to level 7 without
+/// the flag, stays on level 6 with its estimate. And a pure rolling contact (S-bar
+/// 0: sliding mu-bar 0, its error 0) meets the target, which is absolute for a mu-bar below
+/// 0.01 (`AccuracyTarget::MU_BAR_NEAR_ZERO`): it is not refined.
+#[test]
+fn solve_exact_level_stays_on_its_level_and_pure_rolling_is_not_refined() {
+    let (code, out, err) = repro(&[
+        "solve",
+        "--m",
+        "100",
+        "--l",
+        "5",
+        "--s-bar",
+        "0.1",
+        "--level",
+        "6",
+        "--exact-level",
+        "--json",
+        "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    assert_eq!(v["level"], 6);
+    assert!(v["mu_bar_sliding_error"].as_f64().unwrap() > 0.0);
+    let (code, out, err) = repro(&[
+        "solve", "--m", "20", "--l", "10", "--s-bar", "0", "--level", "6", "--json", "-q",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
+    assert_eq!(v["level"], 6);
+    assert_eq!(v["mu_bar_sliding"], 0.0);
+}
+
 /// A light contact whose case-sized domain reaches beyond three times the core is solved on
 /// nested domains, and `--json` says which (M 5, L 10: `-12.5..7 x 12.5`, innermost the core
 /// `-1.6..1.3 x 1.3` pushed out onto its surroundings' grid lines); a mid-range one is not.

@@ -43,7 +43,7 @@ use repro::pipeline::job::{point_job, Job, Setup, Solve};
 use repro::pipeline::keys::LINE_SOLVER_REVISION;
 use repro::pipeline::merge::result_of;
 use repro::pipeline::outcome::CaseOutcome;
-use repro::solver::output::StartKind;
+use repro::solver::output::{LadderStop, StartKind};
 use repro::solver::point::composite::Patch;
 use repro::solver::point::{Edge, SOLVER_REVISION};
 use serde::{Deserialize, Serialize};
@@ -150,6 +150,25 @@ fn point_probes() -> Vec<Probe> {
             name: "patch: the composite grid's inlet patch",
             job: point(&member, Setup::Rule, LEVEL + 1, Some(Patch::Inlet)),
             took_its_path: solved,
+        },
+        Probe {
+            // Fig. 4 case 214 (mineral oil A, 100 C, 2 GPa, 12 m/s, S 2 %; M 1 484) at level
+            // 7: its level 5 is outside the asymptotic range, and levels 6-7 meet the target.
+            name: "estimate: a coarse level left out, the target met on two levels",
+            job: point(
+                &physical("mineral-oil-a", 100.0, 2.0, 12.0, 0.02, 4.0),
+                Setup::Rule,
+                7,
+                None,
+            ),
+            took_its_path: |o| {
+                o.solved().is_some_and(|s| {
+                    s.level == 7
+                        && s.errors.as_ref().is_some_and(|e| {
+                            e.stopped == Some(LadderStop::FilmUnresolved { level: 5 })
+                        })
+                })
+            },
         },
     ];
     // The paths the parameters choose.

@@ -135,7 +135,8 @@ def solve(
     """Solve one contact exactly as ``repro solve`` does (same keywords as its flags, with
     ``_`` for ``-``: ``m``, ``l``, ``s_bar``, ``d`` in Moes groups, or ``lubricant``,
     ``temperature``, ``ph``, ``um``, ``slip``, ``tau0`` physically, or a datasheet ``nu40`` /
-    ``iso_vg``, ``nu100`` / ``vi``, ``rho15``, ``base_oil``; ``level``, ``line=True`` for a
+    ``iso_vg``, ``nu100`` / ``vi``, ``rho15``, ``base_oil``; ``level`` (``exact_level=True``
+    for that level alone, no finer one for the accuracy target), ``line=True`` for a
     line contact, ``cold=True``, physics ``viscosity``, ``density``, ``rheology``,
     ``patch="inlet"`` for the composite grid's inlet patch).
 

@@ -23,7 +23,7 @@ use std::time::Instant;
 #[pyfunction]
 #[pyo3(signature = (*, m=None, l=None, s_bar=None, d=None, temperature=None, ph=None,
     um=None, tau0=None, slip=None, viscosity=None, density=None, rheology=None,
-    lambda_lss=None, tau_l0=None, line=false, level=None, domain=None, edge=None,
+    lambda_lss=None, tau_l0=None, line=false, level=None, exact_level=false, domain=None, edge=None,
     patch=None, max_cycles=None, newton_steps=None, rolling=true, cold=false, k_solid=None,
     k_lubricant=None, progress=None, **keywords))]
 #[allow(clippy::too_many_arguments)]
@@ -45,6 +45,7 @@ pub fn _solve<'py>(
     tau_l0: Option<f64>,
     line: bool,
     level: Option<u32>,
+    exact_level: bool,
     domain: Option<&str>,
     edge: Option<&str>,
     patch: Option<&str>,
@@ -83,6 +84,7 @@ pub fn _solve<'py>(
         tau_l0,
         line,
         level,
+        exact_level,
         domain: self::domain(domain)?,
         edge: self::edge(edge)?,
         patch: self::patch(patch)?,

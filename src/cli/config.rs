@@ -95,6 +95,7 @@ impl SolveArgs {
             tau_l0: self.tau_l0,
             line: self.line,
             level: self.level,
+            exact_level: self.exact_level,
             domain: match self.domain {
                 DomainArg::Auto => None,
                 DomainArg::Paper => Some(Domain::default()),

@@ -1,7 +1,7 @@
 //! What every solver returns: film thickness, reduced friction, convergence information, and
 //! the typed failure that carries the residual history.
 
-use crate::solver::richardson::{estimate, ErrorEstimate};
+use crate::solver::richardson::{estimate, ErrorEstimate, FIRST_ORDER, SCHEME_ORDER};
 use serde::Serialize;
 
 /// Film thickness results.
@@ -118,13 +118,42 @@ pub enum LadderStop {
         /// The level.
         level: u32,
     },
-    /// Its central film is open but less than half the finest level's: a film its mesh does
-    /// not resolve, outside the asymptotic range (the line contact's ladder,
-    /// [`crate::solver::line`]).
+    /// Its central film is open but less than [`RESOLVED_FILM_SHARE`] of the finest level's:
+    /// a film its mesh does not resolve, outside the asymptotic range.
     FilmUnresolved {
         /// The level.
         level: u32,
     },
+}
+
+/// The share of the finest level's central film below which a coarser level's film is
+/// unresolved. In the asymptotic range consecutive levels differ by a fraction of the value
+/// (Fig. 7's line contacts from level 8 up: 1-30 % in film; the point contacts of the
+/// estimate's sample from level 6 up: 1-35 %); a level at half the finest's or less has its
+/// film closing under its mesh, and the differences it gives do not follow a power law.
+/// Fig. 7's five line contacts (levels 5-11, docs/ACCURACY_NOTES.md, "The line contact's
+/// ladder"): the levels read above this share give estimates that bracket the next finer
+/// level, those read below it (line contact 2's level 7 at 20 % of level 9's film, 5's level
+/// 6 at 14 % of level 8's) estimates that fall short of it. The point contacts: Fig. 4 case
+/// 214's level 5 (central film 4.6 % of level 7's, friction 12.0 against 16.2) is the
+/// coarsest level of an alternating ladder whose first-order bound overstates level 7's error
+/// 90 times; without it levels 6-7 are 1.2 times level 9's distance.
+pub const RESOLVED_FILM_SHARE: f64 = 0.5;
+
+impl LadderStop {
+    /// Why `coarse` is outside the asymptotic range next to the `finest` level (its film
+    /// closed at the centre, or under [`RESOLVED_FILM_SHARE`] of the finest's); `None` where
+    /// it is inside.
+    pub fn outside(coarse: &LevelValues, finest: &LevelValues) -> Option<LadderStop> {
+        let level = coarse.level;
+        if coarse.h_central <= 0.0 {
+            Some(LadderStop::FilmClosed { level })
+        } else if coarse.h_central < RESOLVED_FILM_SHARE * finest.h_central {
+            Some(LadderStop::FilmUnresolved { level })
+        } else {
+            None
+        }
+    }
 }
 
 impl OutputErrors {
@@ -138,14 +167,21 @@ impl OutputErrors {
     }
 
     /// The discretisation error of `output`, in the solver's unit (`None` with fewer than
-    /// two levels).
+    /// two levels). Two levels are read at the scheme's order where the ladder left a coarser
+    /// level out of the asymptotic range (the heavy contacts, whose levels inside it converge
+    /// at 1.9-2.4), else at first order ([`crate::solver::richardson`]).
     pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
+        let two_level_order = match self.stopped {
+            Some(LadderStop::FilmClosed { .. } | LadderStop::FilmUnresolved { .. }) => SCHEME_ORDER,
+            Some(LadderStop::NotConverged { .. }) | None => FIRST_ORDER,
+        };
         estimate(
             &self
                 .levels
                 .iter()
                 .map(|v| v.get(output))
                 .collect::<Vec<_>>(),
+            two_level_order,
         )
     }
 }

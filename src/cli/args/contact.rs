@@ -159,6 +159,12 @@ pub struct SolveArgs {
     /// more than 1 % off there is solved one level finer; the output names the level.
     #[arg(long, help_heading = "Numerics")]
     pub level: Option<u32>,
+    /// Solve exactly the level given: no finer level where the estimated error misses the
+    /// accuracy target (or, for a line contact, where fewer than three levels are inside the
+    /// asymptotic range), so the output shows what one level costs and buys. A film that
+    /// closes at that level is an error naming the level it needs.
+    #[arg(long = "exact-level", help_heading = "Numerics")]
+    pub exact_level: bool,
     /// Computational domain.
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub domain: DomainArg,

@@ -79,6 +79,9 @@ pub struct SolveInputs {
     pub line: bool,
     /// Grid level (default 7; 8 for a line contact).
     pub level: Option<u32>,
+    /// Solve exactly `level`: no finer level for the accuracy target or a closed film (a
+    /// closed film is then an error naming the level it needs).
+    pub exact_level: bool,
     /// The domain, over the rule's (`None`: the rule's).
     pub domain: Option<Domain>,
     /// The edge condition, over the rule's (`None`: the rule's).
@@ -126,6 +129,7 @@ impl Default for SolveInputs {
             tau_l0: None,
             line: false,
             level: None,
+            exact_level: false,
             domain: None,
             edge: None,
             patch: None,
@@ -203,6 +207,10 @@ impl SolveInputs {
         params.multigrid.max_cycles = self.max_cycles;
         params.newton.steps = self.newton_steps;
         params.friction.rolling = self.rolling_friction;
+        if self.exact_level {
+            params.accuracy.target = None;
+            params.accuracy.refinement_levels = 0;
+        }
         if let Some(patch) = self.patch {
             if params.nested {
                 bail!(
@@ -254,10 +262,16 @@ impl SolveInputs {
                 line::MAX_LEVEL
             );
         }
+        let rule = line::Params::for_problem(problem, level);
         Ok(line::Params {
             max_iterations: self.max_cycles,
             rolling_friction: self.rolling_friction,
-            ..line::Params::for_problem(problem, level)
+            refinement_levels: if self.exact_level {
+                0
+            } else {
+                rule.refinement_levels
+            },
+            ..rule
         })
     }
 

@@ -116,6 +116,13 @@ impl SolveReport<'_> {
             .iter()
             .zip(values.iter().zip(names))
             .map(|((_, estimate, scale), (value, name))| match estimate {
+                // A zero output (a pure rolling contact's sliding mu-bar) has an absolute error.
+                Some(x) if *value == 0.0 => format!(
+                    "{name} {:.4} +- {:.1e} ({})",
+                    x.extrapolated * scale,
+                    x.error * scale,
+                    order_text(x)
+                ),
                 Some(x) => format!(
                     "{name} {:.4} +- {:.2} % ({})",
                     x.extrapolated * scale,
@@ -154,9 +161,11 @@ impl SolveReport<'_> {
 /// How an estimate was made, in a few words.
 fn order_text(x: &ErrorEstimate) -> String {
     match (x.trusted(), x.order) {
-        (true, Some(p)) => format!("order {p:.2}"),
+        (true, Some(p)) if p == x.order_used => format!("order {p:.2}"),
+        (true, Some(p)) => format!("order {p:.2}, read at {:.0}", x.order_used),
         (false, _) if x.oscillating => "oscillating, bound".into(),
-        (false, Some(p)) => format!("order {p:.2} not trusted, bound"),
+        (false, Some(p)) => format!("order {p:.2} beyond a power law, bound"),
+        (false, None) if x.levels == 2 => format!("two levels, order {:.0}", x.order_used),
         _ => "bound".into(),
     }
 }

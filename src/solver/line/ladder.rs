@@ -5,23 +5,13 @@
 //! A coarser level is outside that range, and ends the ladder ([`LadderStop`]), where its
 //! central film is closed (not positive: its friction is then negative, Fig. 7's line contact
 //! 2 at level 6 gives -12.4 against 13.0 at level 8) or open but under
-//! [`RESOLVED_FILM_SHARE`] of the finest level's (a film the mesh does not resolve: the same
+//! [`crate::solver::output::RESOLVED_FILM_SHARE`] of the finest level's (a film the mesh does not resolve: the same
 //! contact at level 7 has 0.55e-3 against 2.2e-3 at level 8 and 2.8e-3 at level 10, and read,
 //! it gives level 9 an error of 0.046 where level 10 is 0.053 away). The solve refines its
 //! grid until three levels are read ([`super::Params::refinement_levels`]).
 
 use crate::solver::output::{LadderStop, LevelValues, OutputErrors};
 use crate::solver::richardson::ERROR_LEVELS;
-
-/// The share of the finest level's central film below which a coarser level's film is
-/// unresolved. In the asymptotic range consecutive levels differ by a fraction of the value
-/// (Fig. 7's line contacts from level 8 up: 1-30 % in film); a level at half the finest's or
-/// less has its film closing under its mesh, and the differences it gives do not follow a
-/// power law. Fig. 7's five line contacts (levels 5-11, docs/ACCURACY_NOTES.md, "The line
-/// contact's ladder"): the levels read above this share give estimates that bracket the next
-/// finer level, those read below it (line contact 2's level 7 at 20 % of level 9's film, 5's
-/// level 6 at 14 % of level 8's) estimates that fall short of it.
-pub const RESOLVED_FILM_SHARE: f64 = 0.5;
 
 /// The error record of `ladder` (every converged level of the nested iteration, coarse to
 /// fine): its finest level and the coarser ones inside the asymptotic range next to it, with
@@ -37,12 +27,8 @@ pub fn errors(ladder: &[LevelValues], seconds: f64) -> Option<OutputErrors> {
     let mut read = vec![finest];
     let mut stopped = None;
     for v in ladder.iter().rev().skip(1).take(wanted - 1) {
-        if v.h_central <= 0.0 {
-            stopped = Some(LadderStop::FilmClosed { level: v.level });
-            break;
-        }
-        if v.h_central < RESOLVED_FILM_SHARE * finest.h_central {
-            stopped = Some(LadderStop::FilmUnresolved { level: v.level });
+        if let Some(stop) = LadderStop::outside(v, &finest) {
+            stopped = Some(stop);
             break;
         }
         read.insert(0, *v);
