@@ -7,8 +7,8 @@
 pub mod picture;
 pub mod reader;
 
+use crate::paper::eq13::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::fig8::reader::{read_folder, transform, ReducedRow};
-use crate::paper::mastercurve::fit::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::target::{Measure, Target, TargetReport};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;

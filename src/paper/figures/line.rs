@@ -3,7 +3,7 @@
 
 use super::estimate::EstimateCells;
 use super::spec::FIG7;
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::line_flat;
 use crate::physics::case::{CaseForm, Physics};
 use crate::physics::line_contact::{LinePhysicalCase, LineProblem};

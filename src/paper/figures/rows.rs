@@ -4,7 +4,7 @@
 
 use super::estimate::EstimateCells;
 use super::plot::Plot;
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::point_flat;
 use crate::physics::case::{Case, CaseForm, LubricantSpec};
 use crate::pipeline::csv::rows_renamed;

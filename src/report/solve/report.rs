@@ -1,8 +1,8 @@
 //! What a solve reports, point or line contact: the keys of `repro solve --json` and the
 //! lines of its summary.
 
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::figures::estimate::ladder_stop_words;
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::physics::case::{Physics, Problem};
 use crate::physics::line_contact::{LineFilmFormula, LineProblem};
 use crate::physics::rheology::ShearLaw;
