@@ -38,7 +38,7 @@ fn num(row: &HashMap<String, String>, col: &str) -> f64 {
         .unwrap_or_else(|_| panic!("column {col}: '{}'", row[col]))
 }
 
-/// The Eyring regime of the fits (`paper::mastercurve::fit::FIT_TAU_C_MIN`).
+/// The Eyring regime of the fits (`paper::eq13::FIT_TAU_C_MIN`).
 const TAU_C_MIN: f64 = 100.0;
 
 /// Film `H` (over the Hertzian approach) from which on the flat-film estimate is not tested.

@@ -192,15 +192,27 @@ fn fig8_without_data_says_so() {
         "{out}"
     );
     assert!(err.contains("No measured dataset"), "{err}");
+    // The CSV is its header alone (no comment line a CSV reader would take for data); the
+    // sidecar says why.
     let csv = std::fs::read_to_string(dir.join("out/fig8.csv")).unwrap();
+    assert!(csv.starts_with("dataset,row,"), "{csv}");
+    assert_eq!(csv.lines().count(), 1, "header only: {csv}");
     assert!(
-        csv.starts_with("# fig8: No measured dataset is included"),
-        "{csv}"
+        fig8_note(&dir).starts_with("No measured dataset is included"),
+        "{}",
+        fig8_note(&dir)
     );
-    assert_eq!(csv.lines().count(), 2, "comment and header only: {csv}");
     let svg = std::fs::read_to_string(dir.join("out/fig8.svg")).unwrap();
     assert!(svg.contains("No measured dataset included"));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The note of `out/fig8.provenance.json` in `dir`: what `fig8.csv` holds, in words.
+fn fig8_note(dir: &std::path::Path) -> String {
+    let text = std::fs::read_to_string(dir.join("out/fig8.provenance.json")).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    assert_eq!(v["target"], "fig8", "{text}");
+    v["note"].as_str().unwrap_or_default().to_string()
 }
 
 const HEADER: &str = "series,source,contact,rx_m,ry_m,e_prime_pa,ph_pa,temperature_c,um_m_s,slip,mu,tau0_pa,lubricant,viscosity_law,film_formula";
@@ -219,17 +231,19 @@ fn fig8_transforms_every_dataset_and_names_bad_rows() {
     assert_eq!(code, 0, "{err}");
     let csv = std::fs::read_to_string(dir.join("out/fig8.csv")).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
-    assert_eq!(lines.len(), 4, "{csv}");
+    assert_eq!(lines.len(), 3, "header and two rows: {csv}");
+    assert!(lines[0].starts_with("dataset,row,"), "{csv}");
+    let note = fig8_note(&dir);
     assert!(
-        lines[0].contains("2 measured points from 1 file(s)"),
-        "{csv}"
+        note.starts_with("2 measured points from 1 file(s)"),
+        "{note}"
     );
     // mu-bar = mu p_H / tau0 = 0.05 * 3e9 / 4e6 = 37.5, written with 7 digits.
-    assert!(lines[2].contains(",3.750000e1,"), "{}", lines[2]);
+    assert!(lines[1].contains(",3.750000e1,"), "{}", lines[1]);
     assert!(
-        lines[2].ends_with("\"test input, not measured\""),
+        lines[1].ends_with("\"test input, not measured\""),
         "{}",
-        lines[2]
+        lines[1]
     );
     // A bad row stops the target and names file, row and column.
     std::fs::write(

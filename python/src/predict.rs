@@ -7,7 +7,7 @@ use numpy::PyReadonlyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use repro::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use repro::paper::eq13::{eq13_mu_bar, PAPER_C};
 use repro::paper::prediction::contact::EngineeringContact;
 use repro::paper::prediction::{operating_point, Band, Prediction};
 use repro::physics::case::{LubricantSpec, Physics};

@@ -7,7 +7,7 @@ use super::print::{solve_progress, summary_line};
 use super::progress::in_context;
 use super::shard::{self, TargetJobs};
 use anyhow::{Context as _, Result};
-use repro::paper::mastercurve::fit::FIT_TAU_C_MIN;
+use repro::paper::eq13::FIT_TAU_C_MIN;
 use repro::paper::table4;
 use repro::paper::{self, Target, REGISTRY};
 use repro::pipeline::cache::GIT_REVISION;

@@ -6,11 +6,14 @@
 //! `repro check`, `repro slurm`, `--shard` and `--offline` all read it: adding a target is
 //! adding its module and one line here.
 //!
-//! Beside the targets: [`prediction`] (the mastercurve as a tool, `repro predict`) and
-//! [`accuracy`] (`repro accuracy`, the level study behind each target's default level).
+//! Below the targets: [`eq13`] (Eq. (13), the mastercurve, and its fit to a set of points),
+//! which the figures, the tables, the report and `repro predict` measure against. Beside
+//! them: [`prediction`] (the mastercurve as a tool, `repro predict`) and [`accuracy`]
+//! (`repro accuracy`, the level study behind each target's default level).
 
 pub mod accuracy;
 pub mod cases;
+pub mod eq13;
 pub mod fig8;
 pub mod figures;
 pub mod lss;

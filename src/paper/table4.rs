@@ -1,7 +1,7 @@
 //! Table 4: variation of the central film `H = h/c` and of the sliding reduced friction with
 //! the grid level, for the Appendix case (`cases/table4.toml`), with the wall time per level.
 
-use crate::paper::mastercurve::fit::{eq13_mu_bar, implied_c, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, implied_c, PAPER_C};
 use crate::paper::target::{LevelResult, Measure, Target, TargetReport};
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
@@ -430,10 +430,7 @@ pub fn mastercurve_note(rows: &[Table4Level]) -> String {
 pub fn paper_implied_c() -> Option<(f64, f64)> {
     let tau_c = Table4Case::shipped().ok()?.problem().ok()?.tau_c();
     let (_, mu_bar) = paper_at(7)?;
-    Some((
-        tau_c,
-        crate::paper::mastercurve::fit::implied_c(tau_c, mu_bar),
-    ))
+    Some((tau_c, crate::paper::eq13::implied_c(tau_c, mu_bar)))
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! ([`TargetReport`]). The targets (one module each) build on this file, the registry
 //! (`paper/mod.rs`) lists them, the report reads what they report.
 
-use crate::paper::mastercurve::fit::{fit, Fit, FIT_TAU_C_MIN};
+use crate::paper::eq13::{fit, Fit, FIT_TAU_C_MIN};
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;

@@ -8,9 +8,9 @@
 //! 46 and 21 W/(m K), the mid-plane bound, temperature rises), `thermal.svg` (isothermal and
 //! thermal `mu-bar` against `tau_c`, Eq. 13 dashed).
 
+use crate::paper::eq13::PAPER_C;
 use crate::paper::figures::rows::Operating;
 use crate::paper::figures::{SweepFigure, FIG4, FIG5, FIG6};
-use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::paper::table4::Table4Case;
 use crate::paper::target::{Measure, Target, TargetReport};

@@ -120,7 +120,7 @@ pub fn index_html(built: &[TargetReport], read: &dyn Fn(&str) -> Option<String>)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::paper::mastercurve::fit::Fit;
+    use crate::paper::eq13::Fit;
     use crate::paper::target::{LevelResult, Measure};
     use crate::pipeline::cache::Stamp;
     use crate::pipeline::provenance::Provenance;

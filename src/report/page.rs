@@ -5,8 +5,8 @@
 
 use super::convergence::Convergence;
 use super::html::{percent, Cell, Num, Table};
+use crate::paper::eq13::Fit;
 use crate::paper::find;
-use crate::paper::mastercurve::fit::Fit;
 use crate::paper::target::{ErrorSummary, Measure, Spread, TargetReport};
 use crate::pipeline::cache::GIT_REVISION;
 use crate::pipeline::provenance::{self, Provenance};

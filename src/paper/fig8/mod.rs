@@ -1,19 +1,21 @@
 //! Fig. 8: measured friction transformed to `(tau_c, mu-bar)` by Sec. IV and drawn on
 //! Eq. (13). The data are every `*.csv` under [`DATA_DIR`] (format: `docs/measured-data.md`);
-//! nothing is computed or invented. When the folder holds no dataset the target still builds,
-//! and its CSV, its SVG and its report entry say so and how to add one.
+//! nothing is computed or invented. When the folder holds no dataset the target still builds:
+//! its CSV is the header alone, and its SVG, its sidecar and its report entry say so and how
+//! to add one.
 
 pub mod picture;
 pub mod reader;
 
+use crate::paper::eq13::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::fig8::reader::{read_folder, transform, ReducedRow};
-use crate::paper::mastercurve::fit::{eq13_mu_bar, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::target::{Measure, Target, TargetReport};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::traction::Contact;
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::job::Job;
+use crate::pipeline::provenance::{Provenance, SUFFIX};
 use serde::Serialize;
 use std::path::Path;
 
@@ -51,16 +53,29 @@ struct Fig8Row<'a> {
     source: &'a str,
 }
 
-fn csv_text(rows: &[ReducedRow], files: usize) -> String {
-    let comment = if rows.is_empty() {
-        format!("# fig8: {NO_DATA}\n")
+/// What `fig8.csv` holds, in words: for its sidecar and the report (the CSV itself has no
+/// comment lines).
+fn note(points: usize, files: usize) -> String {
+    if points == 0 {
+        NO_DATA.to_string()
     } else {
         format!(
-            "# fig8: {} measured points from {files} file(s) in {DATA_DIR}/, transformed by Sec. IV (docs/measured-data.md); nothing here is computed by the solver\n",
-            rows.len()
+            "{points} measured points from {files} file(s) in {DATA_DIR}/, transformed by Sec. IV (docs/measured-data.md); nothing here is computed by the solver"
         )
-    };
-    let table = crate::pipeline::csv::rows(rows.iter().map(|r| {
+    }
+}
+
+/// `fig8.provenance.json`: the sidecar of a target without solves ([`Provenance::new`]) and
+/// [`note`].
+#[derive(Serialize)]
+struct Sidecar {
+    #[serde(flatten)]
+    provenance: Provenance,
+    note: String,
+}
+
+fn csv_text(rows: &[ReducedRow]) -> String {
+    crate::pipeline::csv::rows(rows.iter().map(|r| {
         let c = &r.reduced.characteristic;
         let p = &r.row.point;
         let eq13 = eq13_mu_bar(c.tau_c, PAPER_C);
@@ -90,8 +105,7 @@ fn csv_text(rows: &[ReducedRow], files: usize) -> String {
             rel_dev_eq13: r.reduced.mu_bar / eq13 - 1.0,
             source: &r.row.source,
         }
-    }));
-    comment + &table
+    }))
 }
 
 /// Fig. 8: the measured datasets of [`DATA_DIR`], transformed.
@@ -136,12 +150,21 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<TargetReport, PipelineErr
         Measure::Eq13AllPoints { c } => Some(*c),
         _ => None,
     });
-    let csv = ctx.write("fig8.csv", &csv_text(&rows, datasets.len()))?;
+    let note = note(rows.len(), datasets.len());
+    let csv = ctx.write("fig8.csv", &csv_text(&rows))?;
     let svg = picture::svg(&rows, c_all)?;
     let picture = ctx.write("fig8.svg", &svg)?;
+    let files = vec![csv, picture];
+    let sidecar = Sidecar {
+        provenance: Provenance::new("fig8", &files),
+        note: note.clone(),
+    };
+    // Plain data of strings and numbers: serialising cannot fail.
+    let sidecar = serde_json::to_string_pretty(&sidecar).unwrap_or_default() + "\n";
+    let sidecar = ctx.write(&format!("fig8{SUFFIX}"), &sidecar)?;
     let ours = if rows.is_empty() {
         (ctx.warn)(format!("fig8: {NO_DATA}"));
-        NO_DATA.to_string()
+        note
     } else {
         let dev = match fit_range {
             Some(f) => format!(
@@ -152,9 +175,7 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<TargetReport, PipelineErr
             None => format!("no point with tau_c >= {FIT_TAU_C_MIN}"),
         };
         format!(
-            "{} measured points from {} file(s); {dev}; c = {:.2} over all",
-            rows.len(),
-            datasets.len(),
+            "{note}; {dev}; c = {:.2} over all",
             c_all.unwrap_or(f64::NAN)
         )
     };
@@ -167,7 +188,7 @@ pub fn build_from(dir: &Path, ctx: &Context) -> Result<TargetReport, PipelineErr
             "fig8",
             "Fig. 8: measured friction transformed to (tau_c, mu-bar)",
             rows.len(),
-            vec![csv, picture],
+            files.into_iter().chain([sidecar]).collect(),
         )
     })
 }

@@ -2,8 +2,8 @@
 //! dataset series; with no dataset, the curve alone over the range of Figs. 4-8 and a note
 //! saying how to add one.
 
+use crate::paper::eq13::PAPER_C;
 use crate::paper::fig8::reader::ReducedRow;
-use crate::paper::mastercurve::fit::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series};

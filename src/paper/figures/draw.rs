@@ -5,7 +5,7 @@
 use super::plot::{FrictionAxis, Plot, SeriesBy};
 use super::run::{run_sweep, selection};
 use super::{picture, rows};
-use crate::paper::mastercurve::fit::{Fit, FIT_TAU_C_MIN};
+use crate::paper::eq13::{Fit, FIT_TAU_C_MIN};
 use crate::paper::target::{eq13_regime_fit, Measure, TargetReport};
 use crate::pipeline::context::Context;
 use crate::pipeline::error::PipelineError;
@@ -73,7 +73,7 @@ fn eq13_words(points: &[(f64, f64)]) -> String {
         .copied()
         .filter(|p| p.0 >= FIT_TAU_C_MIN)
         .collect();
-    match crate::paper::mastercurve::fit::fit(&in_range) {
+    match crate::paper::eq13::fit(&in_range) {
         Some(f) => format!(
             "off Eq. (13) by {:.2} RMS, {:.2} at most (μ̄ units, τ̄_{{c}} ≥ {FIT_TAU_C_MIN})",
             f.rms_abs_dev, f.max_abs_dev
@@ -211,8 +211,8 @@ pub fn severity_summary(runs: &[PointRun], y: FrictionAxis) -> String {
         .iter()
         .map(|&(s, m, l, mu)| (0.25 * s.ln() + m.ln() + 3.0 * l.ln(), mu))
         .collect();
-    let paper_scatter = crate::paper::mastercurve::fit::scatter(&mut paper);
-    match crate::paper::mastercurve::fit::severity_exponents(&cases) {
+    let paper_scatter = crate::paper::eq13::scatter(&mut paper);
+    match crate::paper::eq13::severity_exponents(&cases) {
         Some((a, c, best)) => format!(
             "; scatter about one curve (0 = a curve, 2 = random) {paper_scatter:.3} with the paper's S-bar^(1/4) M L^3, {best:.3} with the best exponents S-bar^{a:.2} M L^{c:.1}"
         ),

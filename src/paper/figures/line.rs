@@ -1,8 +1,9 @@
 //! The line contacts of Fig. 7: the five Table 3 load cases of `cases/fig7.toml` (mineral oil
 //! A, Roelands, Dowson-Higginson, Eyring) without their `Ry`, solved by the 1-D solver.
 
+use super::estimate::EstimateCells;
 use super::spec::FIG7;
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::line_flat;
 use crate::physics::case::{CaseForm, Physics};
 use crate::physics::line_contact::{LinePhysicalCase, LineProblem};
@@ -135,12 +136,14 @@ struct LineRow {
     cycles: Option<usize>,
     /// Relative discretisation errors and the extrapolated sliding `mu-bar`
     /// ([`crate::solver::richardson`]), and the levels the estimate read (up to `level - 2`
-    /// to `level`; fewer where a coarser level is outside the asymptotic range).
+    /// to `level`; fewer where a coarser level is outside the asymptotic range) with its
+    /// status ([`EstimateCells`]).
     hc_rel_error: Option<f64>,
     hmin_rel_error: Option<f64>,
     mu_bar_sliding_rel_error: Option<f64>,
     mu_bar_sliding_extrapolated: Option<f64>,
-    error_levels: String,
+    #[serde(flatten)]
+    estimate: EstimateCells,
     status: String,
 }
 
@@ -164,13 +167,13 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
             alpha_bar: g.alpha_bar,
             tau_c,
             mu_bar_eq13: eq13,
+            estimate: EstimateCells::of(r.outcome.solved()),
             status: r.outcome.status(),
             ..LineRow::default()
         };
         match r.outcome.solved() {
             Some(s) => {
                 let flat = line_flat(&r.problem, s.h_central);
-                let levels = s.errors.as_ref().map_or(&[][..], |e| e.levels.as_slice());
                 LineRow {
                     level: s.level,
                     hc: Some(s.h_central),
@@ -187,10 +190,6 @@ pub fn line_csv(runs: &[LineRun], level: u32) -> String {
                     mu_bar_sliding_extrapolated: s
                         .estimate(Output::MuBarSliding)
                         .map(|e| e.extrapolated),
-                    error_levels: match (levels.first(), levels.last()) {
-                        (Some(a), Some(b)) => format!("{}-{}", a.level, b.level),
-                        _ => String::new(),
-                    },
                     ..row
                 }
             }

@@ -2,9 +2,10 @@
 //! by data ([`spec`]: its sweep file, what it plots, how its series split), the sweep's cases
 //! run through the cache and drawn ([`draw`]: the per-case CSV of [`rows`], the picture of
 //! [`picture`]), the points measured against Eq. (13). Fig. 7 adds the line contacts of
-//! Table 3 ([`line`]).
+//! Table 3 ([`line`]). Both CSVs say what each case's error estimate read ([`estimate`]).
 
 pub mod draw;
+pub mod estimate;
 pub mod line;
 pub mod picture;
 pub mod plot;

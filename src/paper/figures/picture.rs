@@ -3,7 +3,7 @@
 //! as the figure says ([`SeriesBy`]) so that the collapse (or not) is visible.
 
 use super::plot::{Plot, SeriesBy};
-use crate::paper::mastercurve::fit::PAPER_C;
+use crate::paper::eq13::PAPER_C;
 use crate::paper::picture::eq13_curve;
 use crate::pipeline::error::PipelineError;
 use crate::pipeline::executor::PointRun;

@@ -2,8 +2,9 @@
 //! solve gave (or why it failed), the figure's x and y, the flat-film oracle and the thermal
 //! post-process.
 
+use super::estimate::EstimateCells;
 use super::plot::Plot;
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::oracle::point_flat;
 use crate::physics::case::{Case, CaseForm, LubricantSpec};
 use crate::pipeline::csv::rows_renamed;
@@ -55,8 +56,8 @@ struct FigureRow {
 
 /// The discretisation error of a case ([`crate::solver::richardson`]): the relative error of
 /// the central film, the minimum film and the sliding `mu-bar`, the extrapolated central film
-/// (Moes) and sliding `mu-bar`, the absolute error of the figure's `y` (its error bar), and
-/// the levels the estimate read; blank where not estimated.
+/// (Moes) and sliding `mu-bar`, the absolute error of the figure's `y` (its error bar), blank
+/// where not estimated; and the levels the estimate read with its status ([`EstimateCells`]).
 #[derive(Debug, Default, Serialize)]
 struct ErrorCells {
     hc_rel_error: Option<f64>,
@@ -65,17 +66,21 @@ struct ErrorCells {
     hc_moes_extrapolated: Option<f64>,
     mu_bar_sliding_extrapolated: Option<f64>,
     y_error: Option<f64>,
-    error_levels: String,
+    #[serde(flatten)]
+    estimate: EstimateCells,
 }
 
 impl ErrorCells {
-    fn of(s: &SolvedCase, plot: Plot) -> Self {
+    /// The cells of a case: `solved`, or `None` where it failed (the status alone).
+    fn of(solved: Option<&SolvedCase>, plot: Plot) -> Self {
+        let estimate = EstimateCells::of(solved);
+        let Some(s) = solved else {
+            return ErrorCells {
+                estimate,
+                ..ErrorCells::default()
+            };
+        };
         let moes = s.hc_moes / s.h_central;
-        let levels = s
-            .errors
-            .as_ref()
-            .map(|e| e.levels.as_slice())
-            .unwrap_or(&[]);
         ErrorCells {
             hc_rel_error: s.relative_error(Output::HCentral),
             hmin_rel_error: s.relative_error(Output::HMin),
@@ -83,10 +88,7 @@ impl ErrorCells {
             hc_moes_extrapolated: s.estimate(Output::HCentral).map(|e| e.extrapolated * moes),
             mu_bar_sliding_extrapolated: s.estimate(Output::MuBarSliding).map(|e| e.extrapolated),
             y_error: plot.y_error(s),
-            error_levels: match (levels.first(), levels.last()) {
-                (Some(a), Some(b)) => format!("{}-{}", a.level, b.level),
-                _ => String::new(),
-            },
+            estimate,
         }
     }
 }
@@ -181,6 +183,7 @@ impl FigureRow {
             n: g.n,
             tau_c,
             mu_bar_eq13: eq13,
+            errors: ErrorCells::of(r.solved(), plot),
             thermal: ThermalCells::of(r.solved()),
             status: r.outcome.status(),
             ..FigureRow::default()
@@ -205,7 +208,6 @@ impl FigureRow {
                     cycles: Some(s.cycles),
                     newton_steps: Some(s.newton_steps),
                     residual: Some(s.residual),
-                    errors: ErrorCells::of(s, plot),
                     ..row
                 }
             }

@@ -11,9 +11,9 @@
 
 pub mod form;
 
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::figures::{run_sweep, study_jobs, write_provenance, FIG4};
 use crate::paper::lss::form::{fit, saturated, FormFit, FormPoint};
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::paper::target::{Target, TargetReport};
 use crate::physics::case::{Case, CaseForm};

@@ -7,14 +7,13 @@
 //! `mastercurve-fit.csv` (the coefficients fitted on all cases, then on all but each figure
 //! with that figure's cross-validated RMS), `mastercurve.svg`.
 
-pub mod fit;
 pub mod oracle;
 pub mod picture;
 pub mod refined;
 
+use crate::paper::eq13::{eq13_mu_bar, fit, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::figures::line::solve_table3;
 use crate::paper::figures::{SweepFigure, FIG3, FIG4, FIG5, FIG6, FIG7};
-use crate::paper::mastercurve::fit::{eq13_mu_bar, fit, FIT_TAU_C_MIN, PAPER_C};
 use crate::paper::mastercurve::oracle::{line_flat, point_flat};
 use crate::paper::mastercurve::refined::{
     band95, cross_validated, fit as fit_refined, rms_rel, Features, FigureCheck, Refined, Sample,

@@ -2,7 +2,7 @@
 //! the refined formula, and the residuals of both against `tau_c` below, three figures stacked
 //! in one SVG (each a nested `<svg>` at its offset, so each keeps its own coordinates).
 
-use crate::paper::mastercurve::fit::PAPER_C;
+use crate::paper::eq13::PAPER_C;
 use crate::paper::picture::{eq13_curve, MU_BAR, TAU_C};
 use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Curve, Figure, Marker, Scale, Series, HEIGHT, WIDTH};

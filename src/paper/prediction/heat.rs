@@ -2,7 +2,7 @@
 //! estimate without one, as a relative correction of the isothermal friction; and the
 //! warnings where the paper's Eq. (14) is not to be trusted.
 
-use crate::paper::mastercurve::fit::FIT_TAU_C_MIN;
+use crate::paper::eq13::FIT_TAU_C_MIN;
 use crate::physics::case::{Case, Problem};
 use crate::physics::lubricant::LubricantTable;
 use crate::physics::thermal::{ThermalError, ThermalInputs, ISOTHERMAL_CORRECTION_MAX};

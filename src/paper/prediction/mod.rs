@@ -16,7 +16,7 @@
 pub mod contact;
 pub mod heat;
 
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
 use crate::paper::mastercurve::refined::{Features, REFINED, REFINED_BAND};
 use crate::physics::case::{Case, CaseError, CaseForm, LubricantSpec, PhysicalCase, Problem};
 use crate::physics::lubricant::LubricantTable;

@@ -1,13 +1,14 @@
 //! What a solve reports, point or line contact: the keys of `repro solve --json` and the
 //! lines of its summary.
 
-use crate::paper::mastercurve::fit::{eq13_mu_bar, PAPER_C};
+use crate::paper::eq13::{eq13_mu_bar, PAPER_C};
+use crate::paper::figures::estimate::ladder_stop_words;
 use crate::physics::case::{Physics, Problem};
 use crate::physics::line_contact::{LineFilmFormula, LineProblem};
 use crate::physics::rheology::ShearLaw;
 use crate::solver::grid::Domain;
 use crate::solver::line::LineSolution;
-use crate::solver::output::{Film, Friction, Info, LadderStop, Output, OutputErrors};
+use crate::solver::output::{Film, Friction, Info, Output, OutputErrors};
 use crate::solver::point::PointSolution;
 use crate::solver::richardson::ErrorEstimate;
 use serde_json::{json, Map, Value};
@@ -136,19 +137,8 @@ impl SolveReport<'_> {
             (Some(a), Some(b)) => format!("levels {}-{}", a.level, b.level),
             _ => "no levels".into(),
         };
-        match e.stopped {
-            Some(LadderStop::FilmClosed { level }) => {
-                levels += &format!(", level {level} not read: its film closes at the centre")
-            }
-            Some(LadderStop::NotConverged { level }) => {
-                levels += &format!(", level {level} not read: it did not converge")
-            }
-            Some(LadderStop::FilmUnresolved { level }) => {
-                levels += &format!(
-                    ", level {level} not read: its central film is under half the finest's"
-                )
-            }
-            None => {}
+        if let Some(stop) = e.stopped {
+            levels += &format!(", {}", ladder_stop_words(stop));
         }
         format!(
             "grid error  {} [extrapolated, Moes; {levels}, {:.2} s]\n",

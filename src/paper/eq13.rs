@@ -1,5 +1,7 @@
 //! The mastercurve: Eq. (13) `mu-bar = asinh(tau_c / c)` with `c = 5`, the least-squares `c`
-//! of a set of points, and their deviations from Eq. (13).
+//! of a set of points, and their deviations from Eq. (13). Below every target that draws or
+//! measures against it (the figures, the tables, the `mastercurve` target, the report,
+//! `repro predict`); it uses none of them.
 
 use serde::Serialize;
 
