@@ -38,7 +38,7 @@ impl EstimateCells {
 
 /// The status of a solved case's estimate: `estimated` where it read two levels or more and
 /// the ladder did not stop; `estimated; ...` where a coarser level stopped it after two or
-/// more (from two, the estimate is their first-order bound); `not estimated; ...` where it
+/// more (from two, the estimate reads them at the scheme's order); `not estimated; ...` where it
 /// read the finest level alone (its error cells are blank), with why.
 pub fn status(errors: Option<&OutputErrors>) -> String {
     let read = errors.map_or(0, |e| e.levels.len());

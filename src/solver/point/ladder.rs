@@ -10,10 +10,12 @@
 //! cycles as its finest level does from the base's finest. Otherwise (a cold solve) it starts
 //! from the finer solution injected onto its nodes, which is within the two levels'
 //! discretisation difference of its own solution (on the Table 4 case 20 % in the central
-//! film between levels 6 and 7, 24 cycles). A level that does not converge, or whose film
-//! closes at the centre (the heavy contacts' coarsest levels, M above ~1 000 at small L), ends
-//! the ladder ([`LadderStop`]); the estimate reads the levels above it: with two, the
-//! untrusted first-order bound, with one, none.
+//! film between levels 6 and 7, 24 cycles); where it does not converge from that state, it is
+//! converged again from injection. A level that does not converge, or whose film is outside
+//! the asymptotic range (closed at the centre, or under half the finest's: the heavy
+//! contacts' coarsest levels, M above ~1 000 at small L), ends the ladder ([`LadderStop`]);
+//! the estimate reads the levels above it: with two, at the scheme's second order, with one,
+//! none ([`crate::solver::richardson`]).
 
 use super::converge::{converge_level, How, Tally};
 use super::cycles::{level_number, stop_outputs};
