@@ -10,19 +10,17 @@
 //!
 //! The column order is kept from one factorisation to the next while the columns are mostly
 //! the same ones: each column carries a label (its grid node), and a new system whose labels
-//! the last COLAMD order ranked, but for a few, is factorised in that order (the few last).
-//! COLAMD was a quarter of a factorisation at level 7 (0.16 s of 0.63 s for the M = 19 205
-//! case's preconditioner) and 0.8 s of 3.9 s at level 8, and a Newton step moves only the
+//! the last COLAMD order ranked, but for a few, is factorised in that order (the few last):
+//! COLAMD is a fifth to a quarter of a factorisation, and a Newton step moves only the
 //! cavitation boundary's nodes. faer's own driver recomputes it every time; this one calls
 //! faer's public symbolic and numeric steps itself to pass the order in.
 //!
-//! The factor is single precision. The box already makes the preconditioner an approximation
-//! of the Jacobian that GMRES corrects in 2-30 iterations; a rounding of 1e-7 relative
-//! changes nothing it sees (the same Newton steps on eight Newton-Krylov cases and on the
-//! M = 19 205 one, whose GMRES counts moved by at most two), and it halves the memory the factorisation and its triangular solves
-//! stream through: at level 8 a factorisation took 3.0 s and a solve 80 ms in double
-//! precision, 2.1 s and 50 ms in single. GMRES is the flexible form, which does not need
-//! the rounded solves to be exactly linear ([`super::gmres`]).
+//! The factor is single precision: the box already makes the preconditioner an approximation
+//! of the Jacobian that GMRES corrects, a rounding of 1e-7 relative changes nothing it sees,
+//! and single precision halves the memory the factorisation and its solves stream through.
+//! GMRES is the flexible form, which does not need the rounded solves to be exactly linear
+//! ([`super::gmres`]). The measurements behind both choices: docs/ACCURACY_NOTES.md, "The
+//! Newton-Krylov preconditioner's factor".
 //! Its factorisation and solves run with flush-to-zero: the factor's fill decays through
 //! `f32`'s subnormal range, which costs an Intel core a microcode assist per operand
 //! ([`super::subnormal`]).

@@ -2,18 +2,10 @@
 //! ([`super::bordered_lu`]): the one place the solver sets the processor's flush-to-zero
 //! arithmetic, and an audit that counts subnormals in the factor and in the GMRES vectors.
 //!
-//! Why a flag, and where. The preconditioner's rows are scaled by their diagonal, so its
-//! entries lie within 8 decades of their row's largest (every entry of the M = 19 205 level-7
-//! system). Its LU factor's entries do not: they decay smoothly through the elimination's
-//! fill, from 1 down past `f32`'s smallest normal number 1.2e-38 (the M = 19 205 base: 0.7 %
-//! of its 18.5 million factor entries subnormal at level 7, 2.7 % of 100 million at level 8;
-//! in `L` and `U` alike, a continuum over 45 decades with no gap). A diagonal scaling cannot
-//! lift them: `L` is unchanged by column scaling and changes by ratios `d_i / d_j` under row
-//! scaling, and a continuum wider than `f32`'s 76-decade range keeps a tail whatever shift it
-//! is given. An Intel core takes a microcode assist for every subnormal operand or result
-//! (AMD's mostly do not), and the factorisation's dense kernels use each subnormal entry many
-//! times: on a 2-core Intel Xeon (AVX-512) the M = 19 205 base took 174 s, against 31 s with
-//! the flag (the same 26 Newton steps and 273 GMRES iterations, the same output bits).
+//! Why a flag: the factor's entries decay through the elimination's fill past `f32`'s
+//! smallest normal number in a continuum no diagonal scaling can lift, and an Intel core takes
+//! a microcode assist for every subnormal operand (the measurements: docs/ACCURACY_NOTES.md,
+//! "The Newton-Krylov preconditioner's factor").
 //!
 //! [`FlushToZero`] sets the FTZ and DAZ bits of the calling thread's MXCSR for the duration
 //! of a factorisation or a triangular solve of the `f32` factor and restores them after. What

@@ -242,24 +242,14 @@ pub(super) fn converge_by_cycles(
 }
 
 /// The weight of the coarse-grid correction into a level whose cycles alternate
-/// ([`Alternation`]). Where a sharp pressure front in the contact (the side of the
-/// horseshoe-shaped spike of a high-`L` contact: the pressure falls from `p_H` to 0.2 `p_H`
-/// over two cells of level 8 and the across-line coefficient by three decades) is resolved
-/// on the top level but not on the one below, the coarse-grid correction moves the front by
-/// a cell and the relaxation moves it back: the cycle has an eigenvalue at or below -1, and
-/// the cycles lock into a period-two oscillation (successive pressure changes at cosine
-/// -1.000, a node moving by 0.38 `p_H`, the residual standing at 2e-4) or diverge slowly,
-/// and only Newton-Krylov converged the level. A weight `w` takes an eigenvalue `l` to
-/// `1 - w (1 - l)`. Measured on the three families that did this at level 8 (Fig. 5's
-/// traction fluid at 40 C, 2 m/s and 60 C, 12 m/s, 1 GPa; Fig. 6's 5P4E at 60 C, 2 m/s,
-/// 1 GPa), with every top level's correction weighted from its first cycle: 0.5-0.7
-/// converged their level 8 in 10-13 cycles, 0.8 and 0.9 did not converge Fig. 6's or Fig.
-/// 5's (Newton-Krylov took over). Only a level that alternates is weighted: at 0.7 from the
-/// start the level-7 cycles of Fig. 5 case 5 took 12 cycles instead of 8. Weighted once
-/// they alternate, Fig. 5's two families converge by cycles at level 8; Fig. 6's does not:
-/// with the oscillation gone it stalls again at a residual of 2e-4 where the relaxation's
-/// Gauss-Seidel / Jacobi switch flips along `Y = -0.73` (not periodic; a hysteresis of 50 %
-/// or 90 % in the switch did not help), and Newton-Krylov finishes it as before.
+/// ([`Alternation`]). Where a sharp pressure front (the side of a high-`L` contact's
+/// horseshoe-shaped spike) is resolved on the top level but not on the one below, the
+/// coarse-grid correction moves the front by a cell and the relaxation moves it back: the
+/// cycle has an eigenvalue at or below -1 and locks into a period-two oscillation. A weight
+/// `w` takes an eigenvalue `l` to `1 - w (1 - l)`; 0.5-0.7 cured the measured families, 0.8
+/// did not, and only an alternating level is weighted, since the weight slows healthy cycles
+/// (docs/ACCURACY_NOTES.md, "Why the new level-8 solves needed Newton-Krylov, and the
+/// weighted correction").
 pub(super) const DAMPED_CORRECTION: f64 = 0.6;
 
 /// Cosine between two successive cycles' pressure changes below which they alternate.

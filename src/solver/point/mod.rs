@@ -17,6 +17,7 @@ mod cold;
 pub mod composite;
 mod converge;
 mod cycles;
+mod driver;
 mod edge;
 mod far_field;
 mod finish;
@@ -38,19 +39,14 @@ mod transfer;
 mod warm;
 
 use crate::physics::case::Problem;
-use crate::physics::film::hc_nijenbanning;
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::{
-    Film, Friction, Info, Method, OutputErrors, Progress, SolveError, StartKind,
-};
-use converge::Tally;
-use cycles::level_number;
-use edge::settle_top;
+use crate::solver::output::{Film, Friction, Info, OutputErrors, Progress, SolveError};
+pub use driver::level_to_resolve;
+use driver::{observing, solve_with, Converged};
 pub use friction::{mean_shear_stress, FrictionRegion, LOADED_FILM_FACTOR};
 pub use ladder::CoarseSolution;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
 pub(crate) use level::LOAD;
-use multigrid::Hierarchy;
 use nested::Surround;
 pub use params::{
     AccuracyParams, Edge, FrictionParams, KrylovParams, MultigridParams, NewtonParams, Params,
@@ -58,7 +54,6 @@ pub use params::{
 };
 pub use refine::AccuracyTarget;
 use std::sync::Arc;
-use std::time::Instant;
 pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
@@ -100,19 +95,6 @@ pub struct PointSolution {
     /// The patch of a composite grid ([`Params::patch`]): its rectangle and mesh; the fields
     /// above are the whole domain's.
     pub patch: Option<(Domain, f64)>,
-}
-
-/// The level estimated to resolve the film of `problem` whose minimum film came out as
-/// `h_min <= 0` (in `h/c`) at `level`: the film's grid error (the expected minimum film less
-/// `h_min`) falls like `4^-level` (second order), and the level is the first where it is
-/// below half the expected minimum film, taken as half the Nijenbanning-Venner-Moes central
-/// film (the heavily loaded contacts' minimum film is 0.5-0.7 of the central one).
-pub fn level_to_resolve(problem: &Problem, level: u32, h_min: f64) -> u32 {
-    let g = &problem.groups;
-    let expected = 0.5 * hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale;
-    let error = expected - h_min;
-    let halvings = ((2.0 * error / expected).ln() / 4f64.ln()).ceil().max(1.0);
-    level + halvings as u32
 }
 
 /// Solves `problem` with `params` from the Hertzian pressure (full multigrid); `observer` (if
@@ -166,194 +148,4 @@ fn solve_any(
         return chain::solve_point(problem, params, start, observer);
     }
     solve_with(problem, (params, None), start, observer)
-}
-
-/// `observer` as a closure that hears every step, or none where there is no observer.
-fn observing<'a>(mut observer: Option<&'a mut dyn FnMut(&Progress)>) -> impl FnMut(&Progress) + 'a {
-    move |p| {
-        if let Some(o) = observer.as_mut() {
-            o(p)
-        }
-    }
-}
-
-/// What converged the top level: its cycles, history and Newton work, and its method.
-struct Converged {
-    tally: Tally,
-    method: Method,
-    start: StartKind,
-    /// Starts of the coarser levels' solves for the error estimate ([`ladder`]).
-    coarser: Vec<CoarseSolution>,
-}
-
-fn solve_with(
-    problem: &Problem,
-    (params, surround): (&Params, Option<&Arc<Surround>>),
-    warm_start: Option<&Start>,
-    observer: Option<&mut dyn FnMut(&Progress)>,
-) -> Result<PointSolution, SolveError> {
-    let start = Instant::now();
-    if !(MIN_LEVEL..=MAX_LEVEL).contains(&params.level) {
-        return Err(SolveError::InvalidParams(format!(
-            "level {} outside {MIN_LEVEL}..={MAX_LEVEL}",
-            params.level
-        )));
-    }
-    if params.multigrid.coarsest_level < 2 || params.multigrid.gamma == 0 {
-        return Err(SolveError::InvalidParams(format!(
-            "coarsest level {} must be at least 2, gamma {} positive",
-            params.multigrid.coarsest_level, params.multigrid.gamma
-        )));
-    }
-    let params = &{
-        let mut clamped = params.clone();
-        clamped.multigrid.coarsest_level = params.multigrid.coarsest_level.min(params.level);
-        clamped
-    };
-    let g = &problem.groups;
-    let mut observe = observing(observer);
-    // A warm start that fits converges on its own level (a base refined to a finer level
-    // takes the member there, with the refinements it has left); where it fails, the cold
-    // solve from the Hertzian pressure, its attempt kept in the history.
-    let warm_params = warm_start
-        .filter(|s| s.fits(params))
-        .map(|s| (s, warm::params_at(params, s.level)));
-    let mut tried = Vec::new();
-    let warm_run = warm_params
-        .as_ref()
-        .and_then(|(s, p)| warm::converge(problem, (p, surround), s, &mut observe, &mut tried));
-    let (params, mut mg, run) = match (warm_run, &warm_params) {
-        (Some((mg, run)), Some((_, p))) => (p, mg, run),
-        _ => {
-            let (mg, mut run) = cold::converge(problem, (params, surround), &mut observe, tried)?;
-            if warm_params.is_some() {
-                run.start = StartKind::Fallback;
-            }
-            (params, mg, run)
-        }
-    };
-    let Converged {
-        mut tally,
-        mut method,
-        start: start_kind,
-        coarser: run_coarser,
-    } = run;
-    // Whether a round of the edge needed Newton-Krylov: reported, while the refinement
-    // below goes by how the level converged in the first place.
-    let mut newton_used = false;
-
-    // Each level, once converged, has its edge settled ([`edge::settle_edge`]). A film that closes
-    // somewhere (the side lobes of the most heavily loaded contacts, M above ~5000, where the
-    // film is a thousandth of the Hertzian approach and the grid's error in the deformation
-    // at the contact edge exceeds it), or outputs whose estimated discretisation error misses
-    // the accuracy target ([`AccuracyParams::target`]), then ask for a finer grid ([`refine`]),
-    // within [`AccuracyParams::refinement_levels`]. The refined level's ladder starts from the
-    // levels below as they converged.
-    let mut refinements = 0;
-    let mut warm_coarser: Vec<CoarseSolution> = match (start_kind, warm_start) {
-        // The coarser levels start from the base's where the member started from it, else
-        // from the full-multigrid states of the cold solve.
-        (StartKind::Warm, Some(s)) => s.coarser.clone(),
-        _ => run_coarser,
-    };
-    let (film, friction, errors, coarser) = loop {
-        settle_top(
-            &mut mg,
-            params,
-            (method, &mut newton_used),
-            &mut tally,
-            &mut observe,
-        )?;
-        let may_refine = refinements < params.accuracy.refinement_levels
-            && level_number(mg.finest()) < MAX_LEVEL;
-        let film = friction::film(mg.finest(), g.moes_film_scale);
-        let closed = film.h_min <= 0.0;
-        if !(params.accuracy.require_positive_film && closed && may_refine) {
-            let fine = mg.finest();
-            if params.accuracy.require_positive_film && closed {
-                let level = level_number(fine);
-                return Err(SolveError::FilmCollapse {
-                    h_min: film.h_min,
-                    level,
-                    level_needed: Some(level_to_resolve(problem, level, film.h_min)),
-                    finest_level: MAX_LEVEL,
-                    cycle: tally.cycles,
-                    residual_history: tally.history,
-                });
-            }
-            let friction =
-                friction::friction(fine, &mg.model, mg.rolling_scale, params.friction.region);
-            if !friction.sliding.is_finite() || !friction.total().is_finite() {
-                return Err(SolveError::NonFinite {
-                    what: "friction",
-                    cycle: tally.cycles,
-                    residual_history: tally.history,
-                });
-            }
-            // The ladder converges its levels the way the top one finally converged.
-            let used = if newton_used {
-                Method::NewtonKrylov
-            } else {
-                method
-            };
-            let (errors, coarser) = if params.accuracy.error_levels > 0 {
-                let (e, c) =
-                    ladder::output_errors(&mut mg, params, used, &warm_coarser, &mut observe);
-                (Some(e), c)
-            } else {
-                (None, Vec::new())
-            };
-            // Only a level its cycles converged: a refined level's Newton-Krylov finish costs
-            // 4-5 s a step at level 8 and converges linearly there (docs/SOLVER.md).
-            let missed = match (&params.accuracy.target, &errors) {
-                (Some(target), Some(e)) => method == Method::Cycles && !target.met_by(e, g.m),
-                _ => false,
-            };
-            if !(missed && may_refine) {
-                break (film, friction, errors, coarser);
-            }
-            // The refined level's ladder starts from this level and the ones below it.
-            let top = mg.levels.len() - 1;
-            let finest = CoarseSolution {
-                level: level_number(&mg.levels[top]),
-                p: mg.levels[top].p.clone(),
-                delta: mg.delta,
-                residual: Some(mg.residual_norm(top).0),
-            };
-            warm_coarser = std::iter::once(finest).chain(coarser).collect();
-        }
-        refinements += 1;
-        method = refine::refine(&mut mg, params, method, &mut tally, &mut observe)?;
-    };
-    if newton_used {
-        method = Method::NewtonKrylov;
-    }
-    let fine = mg.finest();
-    let load_error = (fine.load_defect() / LOAD).abs();
-    let (grid, p, h, delta) = (fine.grid, fine.p.clone(), fine.h.clone(), mg.delta);
-    let level = level_number(fine);
-    Ok(PointSolution {
-        grid,
-        p,
-        h,
-        delta,
-        film,
-        friction,
-        friction_region: params.friction.region,
-        info: Info {
-            level,
-            method,
-            cycles: tally.cycles,
-            newton_steps: tally.work.newton_steps,
-            krylov_iterations: tally.work.krylov_iterations,
-            residual_history: tally.history,
-            load_error,
-            seconds: start.elapsed().as_secs_f64(),
-            start: start_kind,
-        },
-        errors,
-        coarser,
-        surroundings: None,
-        patch: None,
-    })
 }

@@ -19,9 +19,10 @@
 
 use super::converge::{converge_level, How, Tally};
 use super::cycles::stop_outputs;
+use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::stopping::{Known, WarmStop};
-use super::{Converged, Hierarchy, Params, MAX_LEVEL};
+use super::{Converged, Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{Method, Progress, StartKind};
