@@ -1,14 +1,12 @@
 //! The `repro` binary: flags, JSON output and errors that name the flag.
 
-use crate::support::{args, repro, SOLVE_KEYS, WORKED_FLAGS};
+use crate::support::{args, repro, repro_json, SOLVE_KEYS, WORKED_FLAGS};
 
 #[test]
 fn solve_json_has_every_documented_key() {
-    let (code, out, err) = repro(&[
+    let v = repro_json(&[
         "solve", "--m", "100", "--l", "5", "--s-bar", "0.1", "--level", "4", "--json", "-q",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     for key in SOLVE_KEYS {
         assert!(v.get(key).is_some(), "missing key {key}");
     }
@@ -29,7 +27,7 @@ fn solve_json_has_every_documented_key() {
 /// 0.01 (`AccuracyTarget::MU_BAR_NEAR_ZERO`): it is not refined.
 #[test]
 fn solve_exact_level_stays_on_its_level_and_pure_rolling_is_not_refined() {
-    let (code, out, err) = repro(&[
+    let v = repro_json(&[
         "solve",
         "--m",
         "100",
@@ -43,15 +41,11 @@ fn solve_exact_level_stays_on_its_level_and_pure_rolling_is_not_refined() {
         "--json",
         "-q",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     assert_eq!(v["level"], 6);
     assert!(v["mu_bar_sliding_error"].as_f64().unwrap() > 0.0);
-    let (code, out, err) = repro(&[
+    let v = repro_json(&[
         "solve", "--m", "20", "--l", "10", "--s-bar", "0", "--level", "6", "--json", "-q",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     assert_eq!(v["level"], 6);
     assert_eq!(v["mu_bar_sliding"], 0.0);
 }
@@ -61,20 +55,16 @@ fn solve_exact_level_stays_on_its_level_and_pure_rolling_is_not_refined() {
 /// `-1.6..1.3 x 1.3` pushed out onto its surroundings' grid lines); a mid-range one is not.
 #[test]
 fn solve_json_names_the_nested_domains() {
-    let (code, out, err) = repro(&[
+    let v = repro_json(&[
         "solve", "--m", "5", "--l", "10", "--s-bar", "0.1", "--level", "4", "--json", "-q",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     let at = |which: &str, key: &str| v["nested"][which][key].as_f64().unwrap();
     assert_eq!(at("case_domain", "x_start"), -12.5);
     assert!((-1.8..=-1.6).contains(&at("innermost", "x_start")));
     assert!(at("innermost", "mesh") < at("case_domain", "mesh") / 5.0);
-    let (code, out, err) = repro(&[
+    let v = repro_json(&[
         "solve", "--m", "100", "--l", "5", "--s-bar", "0.1", "--level", "4", "--json", "-q",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     assert!(v.get("nested").is_none());
 }
 
@@ -260,7 +250,7 @@ fn the_paper_edge_on_request_matches_the_venner_lubrecht_code() {
     // far field (the rule's edge) raises it by 1.2 %, more than that bound, so the test
     // also tells that --edge reached the solver.
     let solve = |edge: &str| {
-        let (code, out, err) = repro(&[
+        let v = repro_json(&[
             "solve",
             "--m",
             "20",
@@ -279,8 +269,6 @@ fn the_paper_edge_on_request_matches_the_venner_lubrecht_code() {
             "--json",
             "-q",
         ]);
-        assert_eq!(code, 0, "{err}");
-        let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
         v["hc_moes"].as_f64().expect("hc_moes")
     };
     let zero = solve("zero");
@@ -302,12 +290,10 @@ fn the_line_contact_refuses_an_edge() {
 /// is; a light contact (nested domains already) and a line contact refuse it, naming the flag.
 #[test]
 fn the_inlet_patch_is_reported_and_refused_where_it_does_not_apply() {
-    let (code, out, err) = repro(&[
+    let v = repro_json(&[
         "solve", "--m", "500", "--l", "10", "--s-bar", "0.1", "--level", "5", "--patch", "inlet",
         "--json", "-q",
     ]);
-    assert_eq!(code, 0, "{err}");
-    let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     let x = |key: &str| v["patch"][key].as_f64().unwrap();
     assert!(x("x_start") < -1.0 && x("x_end") < 0.0, "{}", v["patch"]);
     for refused in [

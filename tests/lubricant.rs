@@ -1,7 +1,7 @@
 //! A lubricant as its datasheet gives it (issue 32): `repro predict` and `repro solve` with
 //! datasheet flags, the same oil through a study file, and errors that name the flag or field.
 
-use crate::support::{repro, with_flags};
+use crate::support::{repro, repro_json, with_flags};
 use repro::physics::case::{CaseForm, Problem};
 use repro::physics::lubricant::LubricantTable;
 use repro::pipeline::sweep::Sweep;
@@ -47,9 +47,7 @@ fn predict(extra: &[&str]) -> serde_json::Value {
         .chain(extra)
         .copied()
         .collect();
-    let (code, out, err) = repro(&args);
-    assert_eq!(code, 0, "{err}");
-    serde_json::from_str(&out).expect("one JSON object")
+    repro_json(&args)
 }
 
 fn num(v: &serde_json::Value, path: &[&str]) -> f64 {

@@ -33,6 +33,14 @@ pub fn repro(args: &[&str]) -> (i32, String, String) {
     repro_in(Path::new(env!("CARGO_MANIFEST_DIR")), args)
 }
 
+/// Runs `repro args` (a `--json` command) in the crate's root, asserts it succeeded and returns
+/// the one JSON object it printed.
+pub fn repro_json(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = repro(args);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).expect("one JSON object")
+}
+
 /// The Appendix (Table 4) case as the physical-form flags of `repro solve` and `repro
 /// predict` (what a user types for `cases/table4.toml`; `appendix_problem` reads the file).
 pub const WORKED_FLAGS: [&str; 12] = [

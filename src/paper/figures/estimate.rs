@@ -38,18 +38,16 @@ impl EstimateCells {
 
 /// The status of a solved case's estimate: `estimated` where it read two levels or more and
 /// the ladder did not stop; `estimated; ...` where a coarser level stopped it after two or
-/// more (from two, the estimate reads them at the scheme's order); `not estimated; ...` where it
+/// more (two are read at the scheme's order where the level below was outside the asymptotic
+/// range, else at first order: [`OutputErrors::estimate`]); `not estimated; ...` where it
 /// read the finest level alone (its error cells are blank), with why.
 pub fn status(errors: Option<&OutputErrors>) -> String {
     let read = errors.map_or(0, |e| e.levels.len());
-    let why = match errors.and_then(|e| e.stopped) {
-        Some(stop) => ladder_stop_words(stop),
-        None => "no coarser level solved".into(),
-    };
     match (read >= 2, errors.and_then(|e| e.stopped)) {
         (true, None) => "estimated".into(),
-        (true, Some(_)) => format!("estimated; {why}"),
-        (false, _) => format!("not estimated; {why}"),
+        (true, Some(stop)) => format!("estimated; {}", ladder_stop_words(stop)),
+        (false, Some(stop)) => format!("not estimated; {}", ladder_stop_words(stop)),
+        (false, None) => "not estimated; no coarser level solved".into(),
     }
 }
 
