@@ -23,7 +23,8 @@
 //! boundary), and `mu_step`, that value (a step there); the largest pressure and where;
 //! `dlneta`, the largest change of `ln(eta)` between neighbouring nodes. `PROBE_OUTTOL` sets the output
 //! tolerance, `PROBE_TOL` the residual tolerance (`Params::tolerance`); `PROBE_NEWTONIAN`
-//! takes a Newtonian fluid instead of Eyring.
+//! takes a Newtonian fluid instead of Eyring; `PROBE_MEAN=exp` the exponential fit at the
+//! half points (`HalfPointMean::ExponentialFit`) instead of the arithmetic mean.
 mod common;
 
 use repro::physics::case::*;
@@ -85,6 +86,9 @@ fn main() {
         }
         if let Ok(t) = std::env::var("PROBE_TOL") {
             params.stopping.tolerance = t.parse().unwrap();
+        }
+        if std::env::var("PROBE_MEAN").as_deref() == Ok("exp") {
+            params.half_point = point::HalfPointMean::ExponentialFit;
         }
         let t = std::time::Instant::now();
         let s = match point::solve(&problem, &params, None) {

@@ -150,10 +150,20 @@ impl Jacobian {
                 + xe * (dp[e] - dp[c])
                 + xs * (dp[s] - dp[c])
                 + xn * (dp[nn] - dp[c]);
-            dl += (self.dex[c] + self.dex[w]) * rx2 * (p[w] - p[c])
-                + (self.dex[c] + self.dex[e]) * rx2 * (p[e] - p[c])
-                + (self.dey[c] + self.dey[s]) * ry2 * (p[s] - p[c])
-                + (self.dey[c] + self.dey[nn]) * ry2 * (p[nn] - p[c]);
+            dl += match level.half_derivatives(c) {
+                None => {
+                    (self.dex[c] + self.dex[w]) * rx2 * (p[w] - p[c])
+                        + (self.dex[c] + self.dex[e]) * rx2 * (p[e] - p[c])
+                        + (self.dey[c] + self.dey[s]) * ry2 * (p[s] - p[c])
+                        + (self.dey[c] + self.dey[nn]) * ry2 * (p[nn] - p[c])
+                }
+                Some([dw, de, ds, dn]) => {
+                    (self.dex[c] * dw[0] + self.dex[w] * dw[1]) * rx2 * (p[w] - p[c])
+                        + (self.dex[c] * de[0] + self.dex[e] * de[1]) * rx2 * (p[e] - p[c])
+                        + (self.dey[c] * ds[0] + self.dey[s] * ds[1]) * ry2 * (p[s] - p[c])
+                        + (self.dey[c] * dn[0] + self.dey[nn] * dn[1]) * ry2 * (p[nn] - p[c])
+                }
+            };
             for &(off, wgt) in wedge_weights(i) {
                 dl -= wgt / g.hx * self.drh[(c as isize + off) as usize];
             }
@@ -178,19 +188,34 @@ impl Jacobian {
             (nn, xn),
             (c, -(xw + xe + xs + xn)),
         ];
-        // Through the coefficients: (node, dL/d eps_x, dL/d eps_y, dL/d(rho H)).
-        let mut through: Vec<(usize, f64, f64, f64)> = vec![
-            (
-                c,
-                rx2 * (p[w] + p[e] - 2.0 * p[c]),
-                ry2 * (p[s] + p[nn] - 2.0 * p[c]),
-                0.0,
-            ),
-            (w, rx2 * (p[w] - p[c]), 0.0, 0.0),
-            (e, rx2 * (p[e] - p[c]), 0.0, 0.0),
-            (s, 0.0, ry2 * (p[s] - p[c]), 0.0),
-            (nn, 0.0, ry2 * (p[nn] - p[c]), 0.0),
-        ];
+        // Through the coefficients: (node, dL/d eps_x, dL/d eps_y, dL/d(rho H)); each
+        // half point's mean weighs its two nodes (both 1 for the arithmetic mean).
+        let mut through: Vec<(usize, f64, f64, f64)> = match level.half_derivatives(c) {
+            None => vec![
+                (
+                    c,
+                    rx2 * (p[w] + p[e] - 2.0 * p[c]),
+                    ry2 * (p[s] + p[nn] - 2.0 * p[c]),
+                    0.0,
+                ),
+                (w, rx2 * (p[w] - p[c]), 0.0, 0.0),
+                (e, rx2 * (p[e] - p[c]), 0.0, 0.0),
+                (s, 0.0, ry2 * (p[s] - p[c]), 0.0),
+                (nn, 0.0, ry2 * (p[nn] - p[c]), 0.0),
+            ],
+            Some([dw, de, ds, dn]) => vec![
+                (
+                    c,
+                    rx2 * ((p[w] - p[c]) * dw[0] + (p[e] - p[c]) * de[0]),
+                    ry2 * ((p[s] - p[c]) * ds[0] + (p[nn] - p[c]) * dn[0]),
+                    0.0,
+                ),
+                (w, rx2 * (p[w] - p[c]) * dw[1], 0.0, 0.0),
+                (e, rx2 * (p[e] - p[c]) * de[1], 0.0, 0.0),
+                (s, 0.0, ry2 * (p[s] - p[c]) * ds[1], 0.0),
+                (nn, 0.0, ry2 * (p[nn] - p[c]) * dn[1], 0.0),
+            ],
+        };
         for &(off, wgt) in wedge_weights(i) {
             let k = (c as isize + off) as usize;
             let d = -wgt / g.hx;

@@ -2,7 +2,7 @@
 //! (Eq. 6), the coefficients and the discrete Reynolds operator (Eq. 1).
 
 use super::far_field::FarField;
-pub(crate) use super::model::Model;
+pub(crate) use super::model::{HalfPointMean, Model};
 use crate::solver::deformation::Deformation;
 use crate::solver::grid::Grid;
 
@@ -40,6 +40,19 @@ pub(crate) struct LevelFields {
     pub ex: Vec<f64>,
     /// `kappa^2 rho H^3 / (eta_y lambda)` at the nodes.
     pub ey: Vec<f64>,
+    /// Twice the half-point conductance between node `k` and `k + 1` (along `X`) and
+    /// between `k` and `k + px` (along `Y`): the sum of the two nodes' for the arithmetic
+    /// mean ([`super::model::HalfPointMean`]).
+    pub ex_half: Vec<f64>,
+    pub ey_half: Vec<f64>,
+    /// Where the mean is not the arithmetic one: the derivatives of `ex_half[k]` in
+    /// `ex[k]` and in `ex[k + 1]` (and of `ey_half`), for the Newton-Krylov Jacobian; empty
+    /// for the arithmetic mean (both 1).
+    pub ex_half_d: Vec<[f64; 2]>,
+    pub ey_half_d: Vec<[f64; 2]>,
+    /// The half-point mean of this level: the model's on the top level, the arithmetic one
+    /// on the coarser levels of its cycles.
+    pub half_point: HalfPointMean,
     /// `rho` at the nodes (all ones when incompressible).
     pub rho: Vec<f64>,
     /// `rho H` at the nodes.
@@ -74,6 +87,11 @@ impl LevelFields {
             load_correction: 0.0,
             ex: vec![0.0; n],
             ey: vec![0.0; n],
+            ex_half: vec![0.0; n],
+            ey_half: vec![0.0; n],
+            ex_half_d: Vec::new(),
+            ey_half_d: Vec::new(),
+            half_point: HalfPointMean::Arithmetic,
             rho: vec![1.0; n],
             rh: vec![0.0; n],
             refreshed_delta: None,
@@ -123,6 +141,40 @@ impl LevelFields {
             self.rho[k] = rho;
             self.rh[k] = rho * h;
         }
+        self.update_half_points(self.half_point);
+    }
+
+    /// The half-point conductances of the nodes' present ones ([`LevelFields::ex_half`]).
+    fn update_half_points(&mut self, mean: HalfPointMean) {
+        let (n, px) = (self.p.len(), self.grid.px());
+        let derivatives = mean != HalfPointMean::Arithmetic;
+        for (half, d, node, step) in [
+            (&mut self.ex_half, &mut self.ex_half_d, &self.ex, 1),
+            (&mut self.ey_half, &mut self.ey_half_d, &self.ey, px),
+        ] {
+            d.resize(if derivatives { n } else { 0 }, [1.0, 1.0]);
+            for k in 0..n - step {
+                let (sum, da, db) = mean.twice(node[k], node[k + step]);
+                half[k] = sum;
+                if derivatives {
+                    d[k] = [da, db];
+                }
+            }
+        }
+    }
+
+    /// The derivatives of the half-point sums `(w, e, s, n)` of node `c` in the conductance
+    /// of `c` itself and of the neighbour across each; `None` for the arithmetic mean (every
+    /// one 1).
+    #[inline]
+    pub fn half_derivatives(&self, c: usize) -> Option<[[f64; 2]; 4]> {
+        if self.ex_half_d.is_empty() {
+            return None;
+        }
+        let px = self.grid.px();
+        let (w, e) = (self.ex_half_d[c - 1], self.ex_half_d[c]);
+        let (s, n) = (self.ey_half_d[c - px], self.ey_half_d[c]);
+        Some([[w[1], w[0]], [e[0], e[1]], [s[1], s[0]], [n[0], n[1]]])
     }
 
     /// Half-point coefficients `(xi_w, xi_e, xi_s, xi_n)` at `(i, j)`, divided by `h^2`.
@@ -132,10 +184,10 @@ impl LevelFields {
         let c = g.idx(i, j);
         let (rx2, ry2) = (0.5 / (g.hx * g.hx), 0.5 / (g.hy * g.hy));
         [
-            (self.ex[c] + self.ex[c - 1]) * rx2,
-            (self.ex[c] + self.ex[c + 1]) * rx2,
-            (self.ey[c] + self.ey[c - g.px()]) * ry2,
-            (self.ey[c] + self.ey[c + g.px()]) * ry2,
+            self.ex_half[c - 1] * rx2,
+            self.ex_half[c] * rx2,
+            self.ey_half[c - g.px()] * ry2,
+            self.ey_half[c] * ry2,
         ]
     }
 

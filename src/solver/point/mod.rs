@@ -47,6 +47,7 @@ pub use friction::{mean_shear_stress, FrictionRegion, LOADED_FILM_FACTOR};
 pub use ladder::CoarseSolution;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
 pub(crate) use level::LOAD;
+pub use model::HalfPointMean;
 use nested::Surround;
 pub use params::{
     AccuracyParams, Edge, FrictionParams, KrylovParams, MultigridParams, NewtonParams, Params,

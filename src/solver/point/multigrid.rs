@@ -43,7 +43,7 @@ impl Hierarchy {
         surround: Option<&Arc<Surround>>,
         delta: f64,
     ) -> Self {
-        let model = Model::new(problem);
+        let model = Model::new(problem).with_half_point(params.half_point);
         let g = &problem.groups;
         // Without the far field: its lambda-0 form, zero everywhere.
         let far_lambda = if params.edge == Edge::Zero {
@@ -170,6 +170,17 @@ impl Hierarchy {
     /// problem, with the far field of the present film constant on its boundary.
     pub fn make_top(&mut self, k: usize) {
         let model = self.model;
+        for (i, level) in self.levels.iter_mut().enumerate() {
+            let mean = if i == k {
+                model.half_point
+            } else {
+                super::HalfPointMean::Arithmetic
+            };
+            if level.half_point != mean {
+                level.half_point = mean;
+                level.invalidate();
+            }
+        }
         let level = &mut self.levels[k];
         let g = level.grid;
         let far = &self.far;

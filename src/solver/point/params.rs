@@ -40,6 +40,9 @@ pub struct Params {
     /// coupled both ways (`composite`; `repro solve --patch inlet`, an expert's
     /// option: not the rule's, which stays within issue 39's cost). Default none.
     pub patch: Option<super::patch::PatchSpec>,
+    /// How the conductances meet at the half points of Eq. (1) on every level
+    /// ([`super::HalfPointMean`]). Default the arithmetic mean.
+    pub half_point: super::HalfPointMean,
     /// The multigrid cycles (`cycles`, `multigrid`).
     pub multigrid: MultigridParams,
     /// When a level is converged (`stopping`, and the Newton-Krylov finish).
@@ -62,6 +65,7 @@ impl Default for Params {
             edge: Edge::Zero,
             nested: false,
             patch: None,
+            half_point: super::HalfPointMean::Arithmetic,
             multigrid: MultigridParams::default(),
             stopping: StoppingParams::default(),
             newton: NewtonParams::default(),

@@ -4,10 +4,16 @@ use crate::physics::hertz::Hertz;
 use crate::physics::lubricant::LubricantTable;
 use crate::solver::dense;
 use crate::solver::grid::{Domain, Grid};
+use crate::solver::point::HalfPointMean;
 
 /// A moderately loaded Eyring contact on a level-4 grid, at the Hertzian pressure and a
 /// `Delta` that keeps the film positive.
 fn setup() -> (LevelFields, Model, f64) {
+    setup_with(HalfPointMean::Arithmetic)
+}
+
+/// [`setup`] with the half-point mean `mean`.
+fn setup_with(mean: HalfPointMean) -> (LevelFields, Model, f64) {
     let case = Case {
         spec: CaseForm::Dimensionless(DimensionlessCase {
             m: 100.0,
@@ -21,9 +27,10 @@ fn setup() -> (LevelFields, Model, f64) {
         physics: Physics::default(),
     };
     let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
-    let model = Model::new(&problem);
+    let model = Model::new(&problem).with_half_point(mean);
     let grid = Grid::level(&Domain::default(), 4);
     let mut level = LevelFields::new(grid, &model);
+    level.half_point = mean;
     level.p = grid.sample(Hertz::pressure);
     let delta = 0.3;
     level.update_film(delta);
@@ -87,7 +94,13 @@ fn max_diff(a: &[f64], b: &[f64]) -> f64 {
 
 #[test]
 fn jacobian_vector_product_matches_central_differences_of_the_residual() {
-    let (mut level, model, delta) = setup();
+    for mean in [HalfPointMean::Arithmetic, HalfPointMean::ExponentialFit] {
+        jacobian_vector_product_matches_central_differences_with(mean);
+    }
+}
+
+fn jacobian_vector_product_matches_central_differences_with(mean: HalfPointMean) {
+    let (mut level, model, delta) = setup_with(mean);
     let mut jac = linearise(&mut level, &model);
     let scale = row_scales(&level);
     let n = jac.len();
@@ -123,7 +136,7 @@ fn jacobian_vector_product_matches_central_differences_of_the_residual() {
     let (worst, big) = (max_diff(&jv, &fd), max_abs(&fd));
     assert!(
         worst < 1e-6 * big,
-        "max |J v - FD| = {worst:.3e}, max |FD| = {big:.3e}"
+        "{mean:?}: max |J v - FD| = {worst:.3e}, max |FD| = {big:.3e}"
     );
     // The dense Jacobian is the same operator: the kernel by direct summation instead
     // of the FFT, the same terms summed in another order; round-off only.
@@ -229,7 +242,13 @@ fn preconditioned_krylov_solve_matches_the_dense_solve() {
 
 #[test]
 fn a_box_over_the_whole_grid_is_the_exact_inverse() {
-    let (mut level, model, _) = setup();
+    for mean in [HalfPointMean::Arithmetic, HalfPointMean::ExponentialFit] {
+        a_box_over_the_whole_grid_is_the_exact_inverse_with(mean);
+    }
+}
+
+fn a_box_over_the_whole_grid_is_the_exact_inverse_with(mean: HalfPointMean) {
+    let (mut level, model, _) = setup_with(mean);
     let mut jac = linearise(&mut level, &model);
     let radius = level.grid.nx.max(level.grid.ny);
     let b = direction(jac.len());
