@@ -1,6 +1,10 @@
 """The estimate designs of docs/ACCURACY_NOTES.md ("The estimate, measured") evaluated on the
-sample of examples/estimate_study.rs: `python3 docs/estimate_designs.py docs/estimate-study.jsonl`
-prints the two tables there (Python 3, no packages)."""
+sample of examples/estimate_study.rs: `python3 docs/estimate_designs.py docs/estimate-study.jsonl
+[ADOPTED]` prints the two tables there (Python 3, no packages). The other designs and the
+safety factors are re-implemented here; ADOPTED, the output of
+`cargo run --release --example estimate_adopted -- docs/estimate-study.jsonl`, is the crate's
+own estimator on the same data: given, the adopted row is the crate's, and the script says
+where its own re-implementation of the adopted design differs from it (drift)."""
 import json, sys, math
 rows=[json.loads(l) for l in open(sys.argv[1]) if l.strip()]
 rows=[r for r in rows if r.get("levels")]
@@ -47,6 +51,21 @@ designs=[("point-25: GCI (order 0.8-3, x1.25; else 3x the first-order bound)",gc
          ("**adopted, safety 1.25**",adopted(1.25)),
          ("adopted, safety 1.5",adopted(1.5))]
 OUT=[("h_central","Hc"),("h_min","Hmin"),("mu_bar_sliding","mu-bar")]
+crate={}
+if len(sys.argv)>2:
+    for l in open(sys.argv[2]):
+        if l.strip():
+            a=json.loads(l); crate[(a["case"],a["fine"])]=a
+    twin=adopted(1.25)
+    def by_crate(r,fine):
+        def f(lv,o,cut):
+            e=crate[(r["case"],fine)][o]
+            t=twin(lv,o,cut)
+            same=(e is None and t is None) or (e is not None and t is not None and abs(e-t)<=1e-12*max(abs(e),abs(t),1e-300))
+            drift.append(same)
+            return e
+        return f
+drift=[]
 print(f"sample: {len(rows)} cases, M {min(r['m'] for r in rows):.0f}-{max(r['m'] for r in rows):.0f}\n")
 for fine in (7,8):
     print(f"\nEstimate at level {fine} (levels {fine-2}-{fine}) against level 9 (8 for {sum(r['nested'] for r in rows)} on nested domains, at level 7 only)\n")
@@ -61,7 +80,8 @@ for fine in (7,8):
                 top=r["levels"][-1]
                 if not lv or lv[-1]["level"]!=fine or top["level"]<=fine: continue
                 cut = any(x["h_central"]<=0 for x in r["levels"] if x["level"]<fine-2+1 and x["level"]>=fine-2) or (r.get("stopped") and r["stopped"]["level"]>=fine-2)
-                e=f(lv,o,bool(cut)); t=abs(lv[-1][o]-top[o])
+                g=by_crate(r,fine) if crate and f is designs[3][1] else f
+                e=g(lv,o,bool(cut)); t=abs(lv[-1][o]-top[o])
                 tot+=1
                 if e is None: e=float('inf')
                 if e>=t: br+=1
@@ -71,3 +91,6 @@ for fine in (7,8):
             ratios.sort()
             cells.append(f"{br}/{tot} / {ratios[len(ratios)//2]:.2f}, {ratios[-1]:.1f}")
         print(f"| {name} | " + " | ".join(cells) + f" | {est1} ({tru1}) |")
+if crate:
+    print(f"\nThe adopted row is the crate's estimator (examples/estimate_adopted.rs); this script's "
+          f"re-implementation agrees with it on {sum(drift)} of {len(drift)} estimates.")

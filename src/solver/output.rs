@@ -141,6 +141,15 @@ pub enum LadderStop {
 pub const RESOLVED_FILM_SHARE: f64 = 0.5;
 
 impl LadderStop {
+    /// The level that was not read.
+    pub fn level(self) -> u32 {
+        match self {
+            LadderStop::FilmClosed { level }
+            | LadderStop::NotConverged { level }
+            | LadderStop::FilmUnresolved { level } => level,
+        }
+    }
+
     /// Why `coarse` is outside the asymptotic range next to the `finest` level (its film
     /// closed at the centre, or under [`RESOLVED_FILM_SHARE`] of the finest's); `None` where
     /// it is inside.
