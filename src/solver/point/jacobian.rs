@@ -150,6 +150,8 @@ impl Jacobian {
                 + xe * (dp[e] - dp[c])
                 + xs * (dp[s] - dp[c])
                 + xn * (dp[nn] - dp[c]);
+            // The arithmetic mean's terms as they were written before the other means,
+            // so its products keep their bits (the revision guard's digests).
             dl += match level.half_derivatives(c) {
                 None => {
                     (self.dex[c] + self.dex[w]) * rx2 * (p[w] - p[c])
@@ -189,7 +191,8 @@ impl Jacobian {
             (c, -(xw + xe + xs + xn)),
         ];
         // Through the coefficients: (node, dL/d eps_x, dL/d eps_y, dL/d(rho H)); each
-        // half point's mean weighs its two nodes (both 1 for the arithmetic mean).
+        // half point's mean weighs its two nodes (both 1 for the arithmetic mean, whose
+        // terms keep the form, and so the bits, they had before the other means).
         let mut through: Vec<(usize, f64, f64, f64)> = match level.half_derivatives(c) {
             None => vec![
                 (
