@@ -364,6 +364,23 @@ pub enum SolveError {
 }
 
 impl SolveError {
+    /// `Ok` where `level` lies in `levels` (a solver's finest levels), else the
+    /// [`SolveError::InvalidParams`] that names both.
+    pub(crate) fn check_level(
+        level: u32,
+        levels: std::ops::RangeInclusive<u32>,
+    ) -> Result<(), SolveError> {
+        if levels.contains(&level) {
+            Ok(())
+        } else {
+            Err(SolveError::InvalidParams(format!(
+                "level {level} outside {}..={}",
+                levels.start(),
+                levels.end()
+            )))
+        }
+    }
+
     /// The residual history carried by the error.
     pub fn residual_history(&self) -> &[f64] {
         match self {

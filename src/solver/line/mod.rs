@@ -217,12 +217,7 @@ pub fn solve(
     mut observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<LineSolution, SolveError> {
     let start = Instant::now();
-    if !(MIN_LEVEL..=MAX_LEVEL).contains(&params.level) {
-        return Err(SolveError::InvalidParams(format!(
-            "level {} outside {MIN_LEVEL}..={MAX_LEVEL}",
-            params.level
-        )));
-    }
+    SolveError::check_level(params.level, MIN_LEVEL..=MAX_LEVEL)?;
     if params.start_level < MIN_LEVEL || params.max_iterations == 0 {
         return Err(SolveError::InvalidParams(format!(
             "start level {} must be at least {MIN_LEVEL}, max_iterations positive",

@@ -63,12 +63,7 @@ pub(super) fn solve_with(
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
     let start = Instant::now();
-    if !(MIN_LEVEL..=MAX_LEVEL).contains(&params.level) {
-        return Err(SolveError::InvalidParams(format!(
-            "level {} outside {MIN_LEVEL}..={MAX_LEVEL}",
-            params.level
-        )));
-    }
+    SolveError::check_level(params.level, MIN_LEVEL..=MAX_LEVEL)?;
     if params.multigrid.coarsest_level < 2 || params.multigrid.gamma == 0 {
         return Err(SolveError::InvalidParams(format!(
             "coarsest level {} must be at least 2, gamma {} positive",
