@@ -147,18 +147,25 @@ impl LevelFields {
     /// The half-point conductances of the nodes' present ones ([`LevelFields::ex_half`]).
     fn update_half_points(&mut self, mean: HalfPointMean) {
         let (n, px) = (self.p.len(), self.grid.px());
-        let derivatives = mean != HalfPointMean::Arithmetic;
+        let arithmetic = mean == HalfPointMean::Arithmetic;
         for (half, d, node, step) in [
             (&mut self.ex_half, &mut self.ex_half_d, &self.ex, 1),
             (&mut self.ey_half, &mut self.ey_half_d, &self.ey, px),
         ] {
-            d.resize(if derivatives { n } else { 0 }, [1.0, 1.0]);
+            // The arithmetic mean (every solve of the product) as a plain sum of neighbours,
+            // no per-node dispatch; the others with their derivatives.
+            if arithmetic {
+                d.clear();
+                for (h, (a, b)) in half.iter_mut().zip(node.iter().zip(&node[step..])) {
+                    *h = a + b;
+                }
+                continue;
+            }
+            d.resize(n, [1.0, 1.0]);
             for k in 0..n - step {
                 let (sum, da, db) = mean.twice(node[k], node[k + step]);
                 half[k] = sum;
-                if derivatives {
-                    d[k] = [da, db];
-                }
+                d[k] = [da, db];
             }
         }
     }
