@@ -113,14 +113,9 @@ pub(super) fn converge(
         // that fails, the grid sequence.
         if finest.best_residual < DIRECT_FINISH_RESIDUAL {
             finest.best.restore(&mut mg, top);
-            converged = tally.work.add(&finish(
-                &mut mg,
-                top,
-                params,
-                &Known::default(),
-                observe,
-                &mut tally.history,
-            ));
+            converged = tally
+                .work
+                .add(&finish(&mut mg, top, params, observe, &mut tally.history));
         }
         if !converged {
             starts.push(finest.best);

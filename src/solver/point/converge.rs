@@ -116,14 +116,10 @@ pub(super) fn converge_level(
         }
     }
     let converged = params.newton.steps > 0
-        && (tally.work.add(&finish(
-            mg,
-            k,
-            params,
-            how.known,
-            observe,
-            &mut tally.history,
-        )) || polish_and_finish(mg, k, params, how.known, observe, tally));
+        && (tally
+            .work
+            .add(&finish(mg, k, params, observe, &mut tally.history))
+            || polish_and_finish(mg, k, params, observe, tally));
     converged.then_some(Method::NewtonKrylov)
 }
 
@@ -137,7 +133,6 @@ fn polish_and_finish(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
-    known: &Known,
     observe: &mut dyn FnMut(&Progress),
     tally: &mut Tally,
 ) -> bool {
@@ -154,5 +149,5 @@ fn polish_and_finish(
     run.best.restore(mg, k);
     tally
         .work
-        .add(&finish(mg, k, params, known, observe, &mut tally.history))
+        .add(&finish(mg, k, params, observe, &mut tally.history))
 }

@@ -5,7 +5,7 @@ use super::far_field::{FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use super::level::{self, LOAD};
 use super::multigrid::Hierarchy;
 use super::stopping::{self, Known};
-use super::{friction, Edge, FrictionRegion, Params};
+use super::{friction, Edge, Params};
 use crate::solver::output::{mean_change, Progress, Step};
 
 /// When a run of cycles counts as stalled (see [`super::MultigridParams::stall_cycles`],
@@ -306,23 +306,9 @@ const DIVERGENCE_FACTOR: f64 = 1e3;
 /// Central and minimum film, sliding and rolling `mu-bar` (0 where it is not computed) of
 /// level `k`: what the outputs' stopping rule reads ([`stopping::OutputHistory`]).
 pub(super) fn stop_outputs(mg: &Hierarchy, k: usize, params: &Params) -> [f64; 4] {
-    level_outputs(
-        &mg.levels[k],
-        &mg.model,
-        mg.rolling_scale,
-        params.friction.region,
-    )
-}
-
-/// [`stop_outputs`] of one level, with the hierarchy's `model` and `rolling_scale`.
-pub(super) fn level_outputs(
-    level: &level::LevelFields,
-    model: &level::Model,
-    rolling_scale: Option<f64>,
-    region: FrictionRegion,
-) -> [f64; 4] {
+    let level = &mg.levels[k];
     let film = friction::film(level, 1.0);
-    let mu = friction::friction(level, model, rolling_scale, region);
+    let mu = friction::friction(level, &mg.model, mg.rolling_scale, params.friction.region);
     [
         film.h_central,
         film.h_min,

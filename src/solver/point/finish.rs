@@ -1,26 +1,22 @@
 //! The Newton-Krylov finish on the top level from its current state, the far field refitted
-//! between solves where it is fitted; each solve stops at the residual tolerance or where its
-//! outputs have settled ([`NewtonOutputs`]).
+//! between solves where it is fitted.
 
-use super::cycles::{edge_outputs, level_number, level_outputs, outputs_settled, stop_outputs};
+use super::cycles::{edge_outputs, level_number, outputs_settled};
 use super::far_field::{FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use super::multigrid::Hierarchy;
-use super::stopping::{Known, NewtonOutputs};
 use super::{level, newton, Edge, Params};
 use crate::solver::output::{mean_change, Progress, Step};
 
 /// The Newton-Krylov finish on level `k` (the top of the hierarchy) from its current
-/// state, its outputs' stopping rule knowing `known` (a finer level's outputs on the ladder);
-/// each step is reported and its residual appended to `history`.
+/// state; each step is reported and its residual appended to `history`.
 pub(super) fn finish(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
-    known: &Known,
     observe: &mut dyn FnMut(&Progress),
     history: &mut Vec<f64>,
 ) -> newton::NewtonKrylovRun {
-    let mut outcome = newton_solve(mg, k, params, known, observe, history);
+    let mut outcome = newton_solve(mg, k, params, observe, history);
     if params.edge != Edge::FittedFarField {
         return outcome;
     }
@@ -32,7 +28,7 @@ pub(super) fn finish(
         if !outcome.converged || mg.fit_far_field(k) < FAR_FIELD_SETTLED {
             break;
         }
-        let next = newton_solve(mg, k, params, known, observe, history);
+        let next = newton_solve(mg, k, params, observe, history);
         outcome = newton::NewtonKrylovRun {
             converged: next.converged,
             iterations: outcome.iterations + next.iterations,
@@ -52,15 +48,11 @@ fn newton_solve(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
-    known: &Known,
     observe: &mut dyn FnMut(&Progress),
     history: &mut Vec<f64>,
 ) -> newton::NewtonKrylovRun {
-    let (model, rolling_scale, region) = (mg.model, mg.rolling_scale, params.friction.region);
+    let model = mg.model;
     let mut delta = mg.delta;
-    mg.refresh(k);
-    let mut outputs = NewtonOutputs::new(stop_outputs(mg, k, params), mg.residual_norm(k).0, known);
-    let tolerances = (params.stopping.tolerance, params.stopping.output_tolerance);
     let level = &mut mg.levels[k];
     let mut before = level.p.clone();
     let mut steps = 0;
@@ -91,8 +83,6 @@ fn newton_solve(
                 worst_at: step.worst_at,
             });
             before.copy_from_slice(&level.p);
-            let now = level_outputs(level, &model, rolling_scale, region);
-            outputs.settled_after(now, step.residual, tolerances)
         },
     );
     mg.delta = delta;

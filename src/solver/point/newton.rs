@@ -112,9 +112,7 @@ fn forcing(previous: f64, norm: f64, norm_before: f64) -> f64 {
 /// Newton steps on `level` (its own equations: the top of the hierarchy) from its current
 /// pressure and `delta` until both tolerances of `stopping` are met, within `newton`'s steps;
 /// the first step's forcing term is `first_forcing` ([`FIRST_FORCING`], or
-/// [`warm_first_forcing`] from a warm start). `report` hears of every step and says whether
-/// the outputs have settled ([`super::stopping::NewtonOutputs`]), which also ends the
-/// iteration where the load balance is within its tolerance.
+/// [`warm_first_forcing`] from a warm start). `report` hears of every step.
 pub(crate) fn iterate(
     level: &mut LevelFields,
     model: &Model,
@@ -122,7 +120,7 @@ pub(crate) fn iterate(
     newton: &NewtonParams,
     stopping: &StoppingParams,
     first_forcing: f64,
-    report: &mut dyn FnMut(&LevelFields, &NewtonStep) -> bool,
+    report: &mut dyn FnMut(&LevelFields, &NewtonStep),
 ) -> NewtonKrylovRun {
     let g = level.grid;
     // The row scales are those of this state: a level just interpolated (the next level of
@@ -253,7 +251,7 @@ pub(crate) fn iterate(
         ev = evaluate(level, model, *delta, &scale);
         let (residual, worst_at) = level.residual_norm();
         let load_error = ev.load.abs();
-        let settled = report(
+        report(
             level,
             &NewtonStep {
                 residual,
@@ -265,7 +263,7 @@ pub(crate) fn iterate(
         if !residual.is_finite() {
             return outcome;
         }
-        if (residual < stopping.tolerance || settled) && load_error < stopping.load_tolerance {
+        if residual < stopping.tolerance && load_error < stopping.load_tolerance {
             outcome.converged = true;
             return outcome;
         }

@@ -108,88 +108,6 @@ impl WarmStop {
     }
 }
 
-/// Newton's residual contraction per step up to which [`NewtonOutputs`] reads the outputs:
-/// a tenth, Newton's quadratic regime.
-pub(crate) const NEWTON_CONTRACTION: f64 = 0.1;
-
-/// The residual, as a multiple of the residual tolerance, up to which settled outputs end
-/// the Newton-Krylov finish ([`NewtonOutputs`]). With 100 here, on Fig. 6 at level 7 and the
-/// residual's contraction alone as the outputs' (the design docs/ACCURACY_NOTES.md had
-/// measured and not adopted), case 34 stopped at 3.3e-5 with its rolling friction 1.6e-3 off
-/// the solve to the tolerance.
-pub(crate) const NEWTON_SETTLED_RESIDUAL: f64 = 10.0;
-
-/// The Newton-Krylov finish's stopping rule on its outputs, the cycles' rule
-/// ([`OutputHistory`]) read step by step. A step that changed an output by `d_k` after a
-/// change `d_(k-1)` leaves an error of about `|d_k| rho / (1 - rho)` in it, with `rho` the
-/// larger of the output's own contraction `|d_k / d_(k-1)|` and the residual's
-/// `q = r_k / r_(k-1)`, and at most `|d_k|` where the changes alternate (the limit lies
-/// between the last two iterates). The outputs are settled where that error is within the
-/// cycles' bound for each ([`OutputHistory::settled`]: the output tolerance, or a share of
-/// the distance to the finer level on the error ladder). It is read only in the quadratic
-/// regime, `q` at most [`NEWTON_CONTRACTION`] and the residual at most
-/// [`NEWTON_SETTLED_RESIDUAL`] times the tolerance, and after two steps (two changes).
-///
-/// The output's own contraction is what keeps it safe: where Newton converges linearly (the
-/// M = 19 205 base at level 8) the residual fell 15 times in a step (7.6e-5 to 4.9e-6) and
-/// the central film's error 3 times, so the residual's contraction alone stopped it with
-/// 1.6e-3 left (docs/ACCURACY_NOTES.md, "Designs measured and not adopted"); and the first
-/// steps from a warm start move the cavitation boundary (a 5P4E member at level 7, 40 C,
-/// 2 GPa, 7 m/s: after its second step `q` was 0.23 and the central film 7e-4 off).
-#[derive(Debug)]
-pub(crate) struct NewtonOutputs {
-    last: [f64; 4],
-    change: Option<[f64; 4]>,
-    residual: f64,
-    finer: Option<[f64; 4]>,
-}
-
-impl NewtonOutputs {
-    /// The rule for a finish from a state with `outputs` and `residual`, knowing `known`.
-    pub fn new(outputs: [f64; 4], residual: f64, known: &Known) -> Self {
-        NewtonOutputs {
-            last: outputs,
-            change: None,
-            residual,
-            finer: known.finer,
-        }
-    }
-
-    /// Records a step's `outputs` and `residual`; whether they are settled (the type's
-    /// documentation) at the residual tolerance `tolerance` and the relative output
-    /// tolerance `output_tolerance`.
-    pub fn settled_after(
-        &mut self,
-        outputs: [f64; 4],
-        residual: f64,
-        (tolerance, output_tolerance): (f64, f64),
-    ) -> bool {
-        let last = std::mem::replace(&mut self.last, outputs);
-        let change: [f64; 4] = std::array::from_fn(|o| outputs[o] - last[o]);
-        let before = self.change.replace(change);
-        let q = residual / std::mem::replace(&mut self.residual, residual);
-        let Some(before) = before else {
-            return false;
-        };
-        if !(q <= NEWTON_CONTRACTION && residual <= NEWTON_SETTLED_RESIDUAL * tolerance) {
-            return false;
-        }
-        (0..4).all(|o| {
-            let (d, d_before) = (change[o], before[o]);
-            let error = if d == 0.0 {
-                0.0
-            } else if d * d_before < 0.0 {
-                d.abs()
-            } else {
-                let rho = (d / d_before).abs().max(q).min(RHO_MAX);
-                d.abs() * rho / (1.0 - rho)
-            };
-            let allowed = allowed_error(o, &outputs, self.finer, output_tolerance);
-            error <= allowed * outputs[o].abs()
-        })
-    }
-}
-
 /// The outputs after each cycle.
 #[derive(Debug, Default)]
 pub(crate) struct OutputHistory {
@@ -234,7 +152,29 @@ impl OutputHistory {
     /// below its share of the distance to the finer level where that is larger
     /// ([`Known::finer`]).
     pub fn settled(&self, tolerance: f64) -> bool {
-        self.worst(|o, v| allowed_error(o, v, self.finer, tolerance)) < 1.0
+        let Some(f) = self.finer else {
+            return self.worst(|_, _| tolerance) < 1.0;
+        };
+        let allowed = |o: usize, v: &[f64; 4]| {
+            let distance = |finer: f64, now: f64| (finer - now).abs();
+            let total = distance(f[3], v[2] + v[3]);
+            let absolute = match o {
+                0..=2 => distance(f[o], v[o]),
+                _ => 0.0,
+            };
+            // The sliding part also enters the total where rolling is computed.
+            let absolute = if o == 2 && v[3] != 0.0 {
+                absolute.min(total)
+            } else {
+                absolute
+            };
+            if v[o] == 0.0 {
+                tolerance
+            } else {
+                tolerance.max(FINER_DISTANCE_SHARE * absolute / v[o].abs())
+            }
+        };
+        self.worst(allowed) < 1.0
     }
 
     /// The largest relative error over the outputs, each divided by `allowed(output,
@@ -251,34 +191,6 @@ impl OutputHistory {
             return last;
         }
         last.max(window_error(&self.values[n - 5..n - 1], &allowed))
-    }
-}
-
-/// The relative algebraic error output `o` of `v` (central and minimum film, sliding and
-/// rolling `mu-bar`) may have: `tolerance`, or where the next finer level's outputs `finer`
-/// are known ([`Known::finer`]) the larger of it and [`FINER_DISTANCE_SHARE`] of the
-/// output's distance to them (the sliding part's also to the total's, where rolling is
-/// computed).
-fn allowed_error(o: usize, v: &[f64; 4], finer: Option<[f64; 4]>, tolerance: f64) -> f64 {
-    let Some(f) = finer else {
-        return tolerance;
-    };
-    let distance = |finer: f64, now: f64| (finer - now).abs();
-    let total = distance(f[3], v[2] + v[3]);
-    let absolute = match o {
-        0..=2 => distance(f[o], v[o]),
-        _ => 0.0,
-    };
-    // The sliding part also enters the total where rolling is computed.
-    let absolute = if o == 2 && v[3] != 0.0 {
-        absolute.min(total)
-    } else {
-        absolute
-    };
-    if v[o] == 0.0 {
-        tolerance
-    } else {
-        tolerance.max(FINER_DISTANCE_SHARE * absolute / v[o].abs())
     }
 }
 
@@ -426,96 +338,5 @@ mod tests {
             h.relative_error().is_infinite(),
             "too few cycles to estimate"
         );
-    }
-
-    /// Newton's iterates of an output whose error is `c` times the residual, each step's
-    /// residual `r_k = r_(k-1)^2 / (10 r0)` from `r0` (quadratic), with the residuals.
-    fn newton_steps(limit: f64, c: f64, r0: f64, steps: usize) -> Vec<(f64, f64)> {
-        let mut r = r0;
-        (0..=steps)
-            .map(|k| {
-                if k > 0 {
-                    r = r * r / (10.0 * r0);
-                }
-                (limit + c * r, r)
-            })
-            .collect()
-    }
-
-    /// The rule's verdicts after each of the steps `(outputs, residual)` from `start`.
-    fn verdicts(start: ([f64; 4], f64), steps: &[([f64; 4], f64)], known: &Known) -> Vec<bool> {
-        let mut rule = NewtonOutputs::new(start.0, start.1, known);
-        steps
-            .iter()
-            .map(|&(x, r)| rule.settled_after(x, r, (1e-6, OUTPUT_TOLERANCE)))
-            .collect()
-    }
-
-    #[test]
-    fn newton_outputs_settle_where_the_quadratic_regime_puts_them_within_the_tolerance() {
-        // Residuals 1e-3, 1e-4, 1e-6, 1e-10 (contractions 0.1, 0.01, 1e-4); the outputs'
-        // errors 10 times the residual (1e-2, 1e-3, 1e-5, 1e-9), relative to 1. After the
-        // first step there is one change, too few; after the second the output's own
-        // contraction (0.11, behind the residual's 0.01) reads an error of 1.2e-4 for a true
-        // 1e-5: within 5e-4, with the residual within 10 times 1e-6.
-        let steps: Vec<([f64; 4], f64)> = newton_steps(1.0, 10.0, 1e-3, 3)
-            .into_iter()
-            .map(|(x, r)| ([x; 4], r))
-            .collect();
-        let settled = verdicts(steps[0], &steps[1..], &Known::default());
-        assert_eq!(settled, [false, true, true]);
-    }
-
-    #[test]
-    fn newton_outputs_are_not_read_outside_the_quadratic_regime() {
-        // A step that changes nothing but contracts the residual by only 0.23 (the 5P4E
-        // member of the type's documentation): not settled. Nor a residual 20 times the
-        // tolerance, however settled its outputs; at the tolerance they are.
-        let known = Known::default();
-        let slow = verdicts(
-            ([1.0; 4], 7.4e-3),
-            &[([1.0; 4], 1.7e-3), ([1.0; 4], 3.9e-4)],
-            &known,
-        );
-        assert_eq!(slow, [false, false]);
-        let high = [([1.0; 4], 1e-3), ([1.0; 4], 2e-5), ([1.0; 4], 1e-6)];
-        assert_eq!(
-            verdicts(([1.0; 4], 1.0), &high, &known),
-            [false, false, true]
-        );
-    }
-
-    #[test]
-    fn a_film_converging_linearly_is_not_settled_by_the_residual_falling_fast() {
-        // The M = 19 205 base of the type's documentation: the residual falls 15 times a
-        // step (to 4.9e-6), the central film's error 3 times (1.44e-2, 4.8e-3, 1.6e-3).
-        // Its own contraction reads 1.6e-3 left, the truth: not settled. The residual's
-        // contraction alone would have read 2.2e-4.
-        let film = |e: f64| [1.0 + e, 1.0, 1.0, 0.0];
-        let steps = [(film(4.8e-3), 7.6e-5), (film(1.6e-3), 4.9e-6)];
-        let settled = verdicts((film(1.44e-2), 1.14e-3), &steps, &Known::default());
-        assert_eq!(settled, [false, false]);
-    }
-
-    #[test]
-    fn newton_outputs_on_the_ladder_are_settled_at_a_share_of_the_distance_to_the_finer_level() {
-        // Films and sliding friction ending 1 % from the finer level's (rolling not
-        // computed), their last change 6e-3 after 6e-2 (contraction 0.1): an error of 6.7e-4,
-        // within a tenth of the distance (9.9e-4, relative) but above the tolerance 5e-4
-        // that holds without a finer level. After 3e-2 (contraction 0.2) an error of 1.5e-3:
-        // above both.
-        let finer = Known {
-            start: None,
-            finer: Some([1.0, 1.0, 1.0, 1.0]),
-        };
-        let x = |v: f64| [v, v, v, 0.0];
-        let residuals = [1e-3, 1e-4, 5e-6];
-        let run = |values: [f64; 3], known: &Known| {
-            let steps = [(x(values[1]), residuals[1]), (x(values[2]), residuals[2])];
-            verdicts((x(values[0]), residuals[0]), &steps, known)[1]
-        };
-        let (fast, slow) = ([1.076, 1.016, 1.010], [1.046, 1.016, 1.010]);
-        assert!(run(fast, &finer) && !run(fast, &Known::default()));
-        assert!(!run(slow, &finer) && !run(slow, &Known::default()));
     }
 }
