@@ -9,7 +9,7 @@ use repro::paper::table4::Table4Case;
 use repro::physics::case::Case;
 use repro::physics::rheology::Rheology;
 use repro::solver::output::{LadderStop, Method, Output, SolveError};
-use repro::solver::point::{solve, AccuracyTarget, Params, PointSolution};
+use repro::solver::point::{solve, solve_from, AccuracyTarget, Params, PointSolution, Start};
 
 #[test]
 fn a_closed_film_is_refined_to_the_next_level() {
@@ -369,6 +369,45 @@ fn a_light_member_at_small_slip_converges_on_its_nested_domains() {
         s.friction.sliding,
         100.0 * mu.relative(s.friction.sliding)
     );
+}
+
+#[test]
+fn a_members_ladder_stops_where_its_bases_found_a_level_outside_the_range() {
+    // Fig. 4 case 214's family (mineral oil A, 100 C, 2 GPa, 12 m/s; M 1 484): its base (S
+    // 0.5 %, 6 MPa) finds level 5 outside the asymptotic range at level 7, and so does the
+    // member at S 2 %, 4 MPa when it converges that level itself (its film is its base's
+    // within 1e-4). From its base's start the member does not solve level 5 again: it reads
+    // the same levels 6-7, converged from the same starts, so the same bits, and says whose
+    // finding stopped it.
+    let base = problem(&physical(
+        "mineral-oil-a",
+        100.0,
+        2e9,
+        12.0,
+        0.005,
+        6e6,
+        1.0,
+    ));
+    let member = problem(&physical("mineral-oil-a", 100.0, 2e9, 12.0, 0.02, 4e6, 1.0));
+    let params = Params::for_problem(&base, 7);
+    let b = solve(&base, &params, None).unwrap();
+    let start = Start::of(&b);
+    assert_eq!(start.outside, Some(LadderStop::FilmUnresolved { level: 5 }));
+    let inherited = solve_from(&member, &params, &start, None).unwrap();
+    let own = {
+        let start = Start {
+            outside: None,
+            ..start.clone()
+        };
+        solve_from(&member, &params, &start, None).unwrap()
+    };
+    let (e, own_e) = (inherited.errors.unwrap(), own.errors.unwrap());
+    assert_eq!(e.stopped, Some(LadderStop::OutsideAtBase { level: 5 }));
+    assert_eq!(own_e.stopped, Some(LadderStop::FilmUnresolved { level: 5 }));
+    assert_eq!(e.levels, own_e.levels);
+    for o in [Output::HCentral, Output::HMin, Output::MuBarSliding] {
+        assert_eq!(e.estimate(o), own_e.estimate(o), "{o:?}");
+    }
 }
 
 #[test]

@@ -124,6 +124,13 @@ pub enum LadderStop {
         /// The level.
         level: u32,
     },
+    /// Not solved: the case's base (the same contact at another slip or Eyring stress) found
+    /// it outside the asymptotic range ([`LadderStop::FilmClosed`] or
+    /// [`LadderStop::FilmUnresolved`]), and a family's films differ by 1e-4.
+    OutsideAtBase {
+        /// The level.
+        level: u32,
+    },
 }
 
 /// The share of the finest level's central film below which a coarser level's film is
@@ -146,8 +153,15 @@ impl LadderStop {
         match self {
             LadderStop::FilmClosed { level }
             | LadderStop::NotConverged { level }
-            | LadderStop::FilmUnresolved { level } => level,
+            | LadderStop::FilmUnresolved { level }
+            | LadderStop::OutsideAtBase { level } => level,
         }
+    }
+
+    /// Whether the level was left out of the asymptotic range (its film, or its base's),
+    /// rather than unconverged.
+    pub fn is_outside(self) -> bool {
+        !matches!(self, LadderStop::NotConverged { .. })
     }
 
     /// Why `coarse` is outside the asymptotic range next to the `finest` level (its film
@@ -181,8 +195,8 @@ impl OutputErrors {
     /// at 1.9-2.4), else at first order ([`crate::solver::richardson`]).
     pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
         let two_level_order = match self.stopped {
-            Some(LadderStop::FilmClosed { .. } | LadderStop::FilmUnresolved { .. }) => SCHEME_ORDER,
-            Some(LadderStop::NotConverged { .. }) | None => FIRST_ORDER,
+            Some(stop) if stop.is_outside() => SCHEME_ORDER,
+            _ => FIRST_ORDER,
         };
         estimate(
             &self

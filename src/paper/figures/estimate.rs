@@ -64,6 +64,9 @@ pub fn ladder_stop_words(stop: LadderStop) -> String {
         LadderStop::FilmUnresolved { level } => {
             format!("level {level} not read: its central film is under half the finest's")
         }
+        LadderStop::OutsideAtBase { level } => {
+            format!("level {level} not read: outside the asymptotic range at the case's base")
+        }
     }
 }
 

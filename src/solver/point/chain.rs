@@ -168,6 +168,7 @@ fn chain_from(
             delta: outer.delta,
             method: outer.info.method,
             coarser: Vec::new(),
+            outside: None,
             residual: outer.info.residual(),
         };
         let nested = solve_with(

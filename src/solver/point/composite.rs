@@ -182,6 +182,7 @@ fn run(
             delta: mg.delta,
             method: Method::Cycles,
             coarser: Vec::new(),
+            outside: None,
             residual: params.stopping.tolerance,
         };
         let sol = solve_with(

@@ -115,11 +115,12 @@ pub(super) fn solve_with(
     // within [`AccuracyParams::refinement_levels`]. The refined level's ladder starts from the
     // levels below as they converged.
     let mut refinements = 0;
-    let mut warm_coarser: Vec<CoarseSolution> = match (start_kind, warm_start) {
-        // The coarser levels start from the base's where the member started from it, else
-        // from the full-multigrid states of the cold solve.
-        (StartKind::Warm, Some(s)) => s.coarser.clone(),
-        _ => run_coarser,
+    let (mut warm_coarser, outside_at_base) = match (start_kind, warm_start) {
+        // The coarser levels start from the base's where the member started from it, and
+        // stop where the base's did outside the asymptotic range; else they start from the
+        // full-multigrid states of the cold solve.
+        (StartKind::Warm, Some(s)) => (s.coarser.clone(), s.outside),
+        _ => (run_coarser, None),
     };
     let (film, friction, errors, coarser) = loop {
         settle_top(
@@ -162,8 +163,8 @@ pub(super) fn solve_with(
                 method
             };
             let (errors, coarser) = if params.accuracy.error_levels > 0 {
-                let (e, c) =
-                    ladder::output_errors(&mut mg, params, used, &warm_coarser, &mut observe);
+                let warm = (warm_coarser.as_slice(), outside_at_base);
+                let (e, c) = ladder::output_errors(&mut mg, params, used, warm, &mut observe);
                 (Some(e), c)
             } else {
                 (None, Vec::new())

@@ -15,7 +15,11 @@
 //! the asymptotic range (closed at the centre, or under half the finest's: the heavy
 //! contacts' coarsest levels, M above ~1 000 at small L), ends the ladder ([`LadderStop`]);
 //! the estimate reads the levels above it: with two, at the scheme's second order, with one,
-//! none ([`crate::solver::richardson`]).
+//! none ([`crate::solver::richardson`]). A member's ladder ends where its base's found a level
+//! outside the asymptotic range ([`LadderStop::OutsideAtBase`]): a family's films differ by
+//! 1e-4, and the member would converge that level from injection only to find the same (Fig.
+//! 4's M = 19 205 members each spent 1.1-2.5 s on their level 7, 44 level-8 members on their
+//! level 6; docs/ACCURACY_NOTES.md, "Where a solve's time goes").
 
 use super::converge::{converge_level, How, Tally};
 use super::cycles::{level_number, stop_outputs};
@@ -136,13 +140,14 @@ fn converge_rung(
 }
 
 /// The outputs of the converged top level of `mg` and of up to `params.accuracy.error_levels`
-/// coarser levels converged on their own (from `warm`, the base's, where they are of the same
-/// levels), their estimates, and the coarser solutions. The film constant is restored after.
+/// coarser levels converged on their own (from `warm`'s solutions, the base's, where they are
+/// of the same levels; not below the level `warm`'s stop found outside the asymptotic range),
+/// their estimates, and the coarser solutions. The film constant is restored after.
 pub(super) fn output_errors(
     mg: &mut Hierarchy,
     params: &Params,
     method: Method,
-    warm: &[CoarseSolution],
+    (warm, outside_at_base): (&[CoarseSolution], Option<LadderStop>),
     observe: &mut dyn FnMut(&Progress),
 ) -> (OutputErrors, Vec<CoarseSolution>) {
     let clock = Instant::now();
@@ -160,6 +165,13 @@ pub(super) fn output_errors(
         let level = level_number(&mg.levels[k]);
         let start = warm.iter().find(|w| w.level == level);
         if level < MIN_LEVEL {
+            break;
+        }
+        // The base found this level (or a finer one) outside the asymptotic range: a member
+        // would converge it from injection only to find the same (Fig. 4's M = 19 205
+        // members' level 7, 1.1-2.5 s each; 44 level-8 members' level 6).
+        if outside_at_base.is_some_and(|stop| level <= stop.level()) {
+            stopped = Some(LadderStop::OutsideAtBase { level });
             break;
         }
         let finer = [

@@ -25,7 +25,7 @@ use super::stopping::{Known, WarmStop};
 use super::{Converged, Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
-use crate::solver::output::{Method, Progress, StartKind};
+use crate::solver::output::{LadderStop, Method, Progress, StartKind};
 use std::sync::Arc;
 
 /// A converged solution that a related case starts from: its finest grid and level, the
@@ -45,6 +45,9 @@ pub struct Start {
     /// Its coarser levels' solutions (finest first), where its discretisation error was
     /// estimated: the starts of the member's own.
     pub coarser: Vec<super::CoarseSolution>,
+    /// The coarser level its ladder found outside the asymptotic range, where it did: a
+    /// member's ladder stops there too ([`super::ladder`]).
+    pub outside: Option<LadderStop>,
     /// Its last residual.
     pub residual: f64,
 }
@@ -61,6 +64,11 @@ impl Start {
             method: s.info.method,
             residual: s.info.residual(),
             coarser: s.coarser.clone(),
+            outside: s
+                .errors
+                .as_ref()
+                .and_then(|e| e.stopped)
+                .filter(|stop| stop.is_outside()),
         }
     }
 
