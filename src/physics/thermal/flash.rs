@@ -74,6 +74,28 @@ impl Flash {
         self.scale * sum
     }
 
+    /// [`Flash::upstream_from`] of two bodies at once (the two surfaces of a strip): the same
+    /// two sums, each in its own order, so the same bits, with their terms interleaved so that
+    /// the processor adds the two chains side by side (a third of the thermal post-process was
+    /// these sums one after the other).
+    pub fn upstream_pair(
+        flash: (&Flash, &Flash),
+        q: (&[f64], &[f64]),
+        i: usize,
+        first: usize,
+    ) -> (f64, f64) {
+        let m = i.saturating_sub(first);
+        let w = flash.0.weights[1..=m].iter().zip(&flash.1.weights[1..=m]);
+        let upstream = q.0[i - m..i].iter().rev().zip(q.1[i - m..i].iter().rev());
+        // The neutral element of `f64`'s `Sum`, so that an empty sum has its sign too.
+        let (mut s1, mut s2) = (-0.0, -0.0);
+        for ((w1, w2), (q1, q2)) in w.zip(upstream) {
+            s1 += w1 * q1;
+            s2 += w2 * q2;
+        }
+        (flash.0.scale * s1, flash.1.scale * s2)
+    }
+
     /// The rise at a node per unit of its own flux (K m^2/W).
     pub fn own(&self) -> f64 {
         self.scale * self.weights[0]
@@ -107,6 +129,43 @@ pub fn jaeger_uniform_strip(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_pair_of_upstream_sums_is_each_sum_bit_for_bit() {
+        // Two surfaces at different speeds, fluxes with zeros before `first` and a sign-varied,
+        // many-decade body (the order of an f64 sum shows in its last bits), every node.
+        let n = 97;
+        let (f1, f2) = (
+            Flash::new(&Solid::STEEL, 11.9, 1e-6, n),
+            Flash::new(&Solid::STEEL, 12.1, 1e-6, n),
+        );
+        let first = 9;
+        let flux = |seed: f64| -> Vec<f64> {
+            (0..n)
+                .map(|k| {
+                    if k < first {
+                        0.0
+                    } else {
+                        (seed * k as f64).sin() * 10f64.powi((k % 13) as i32)
+                    }
+                })
+                .collect()
+        };
+        let (q1, q2) = (flux(0.7), flux(1.3));
+        for i in 0..n {
+            let (a, b) = Flash::upstream_pair((&f1, &f2), (&q1, &q2), i, first);
+            assert_eq!(
+                a.to_bits(),
+                f1.upstream_from(&q1, i, first).to_bits(),
+                "node {i}"
+            );
+            assert_eq!(
+                b.to_bits(),
+                f2.upstream_from(&q2, i, first).to_bits(),
+                "node {i}"
+            );
+        }
+    }
 
     #[test]
     fn a_uniform_strip_gives_jaegers_closed_form() {

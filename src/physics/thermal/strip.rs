@@ -74,10 +74,7 @@ pub fn solve_strip(
     // No heat before the first loaded node: the flash sums start there.
     let first = strip.loaded.iter().position(|&l| l).unwrap_or(n);
     for i in 0..n {
-        let upstream = (
-            f1.upstream_from(&q1, i, first),
-            f2.upstream_from(&q2, i, first),
-        );
+        let upstream = Flash::upstream_pair((f1, f2), (&q1, &q2), i, first);
         if !strip.loaded[i] {
             out.nodes.push(film_node(
                 setting.closure,
@@ -103,14 +100,24 @@ pub fn solve_strip(
                 own,
             )
         };
+        let pressure_part = setting.viscosity.pressure_part(strip.p[i]);
         let thermal_stress = |node: &FilmNode| {
-            let delta = setting.viscosity.delta_ln_eta(strip.p[i], node.t_film);
+            let delta = setting
+                .viscosity
+                .delta_ln_eta_with(pressure_part, node.t_film);
             stress(i, strip.x_iso[i] * delta.exp())
         };
-        let t = root(|t| t - thermal_stress(&at(t)), thermal_stress(&at(0.0)))
-            .map_err(|why| ThermalError::Stress { node: i, why })?;
-        let node = at(t);
-        let s = thermal_stress(&node);
+        // A trial stress's residual, with the node and stress it made: the root returns
+        // those of the stress it stops at, so neither is made twice.
+        let trial = |t: f64| {
+            let node = at(t);
+            let s = thermal_stress(&node);
+            (t - s, (node, s))
+        };
+        let zero = trial(0.0);
+        let hi = zero.1 .1;
+        let (_, (node, s)) =
+            root(trial, hi, zero).map_err(|why| ThermalError::Stress { node: i, why })?;
         if !(s.is_finite() && node.t_film.is_finite()) {
             return Err(ThermalError::Stress {
                 node: i,
@@ -126,28 +133,30 @@ pub fn solve_strip(
 }
 
 /// The root of the increasing `g` on `[0, hi]` (`g(0) <= 0 <= g(hi)`), Illinois method, to a
-/// bracket of 1e-14 of `hi`.
-fn root(g: impl Fn(f64) -> f64, hi: f64) -> Result<f64, String> {
+/// bracket of 1e-14 of `hi`: the root and what `g` made with its residual there. `g(0)`,
+/// `at_zero`, is the caller's (it is where `hi` came from).
+fn root<M>(g: impl Fn(f64) -> (f64, M), hi: f64, at_zero: (f64, M)) -> Result<(f64, M), String> {
     if !(hi.is_finite() && hi >= 0.0) {
         return Err(format!("stress bound {hi}"));
     }
-    let (mut a, mut b) = (0.0, hi);
-    let (mut ga, mut gb) = (g(a), g(b));
+    let (mut ga, zero) = at_zero;
     if ga >= 0.0 {
-        return Ok(a);
+        return Ok((0.0, zero));
     }
+    let (mut gb, at_hi) = g(hi);
     if gb <= 0.0 {
-        return Ok(b);
+        return Ok((hi, at_hi));
     }
+    let (mut a, mut b) = (0.0, hi);
     let mut side = 0;
     for _ in 0..MAX_ITERATIONS {
         let c = (a * gb - b * ga) / (gb - ga);
-        let gc = g(c);
+        let (gc, made) = g(c);
         if !gc.is_finite() {
             return Err(format!("non-finite residual at stress {c}"));
         }
         if gc == 0.0 || (b - a) <= 1e-14 * hi {
-            return Ok(c);
+            return Ok((c, made));
         }
         if gc < 0.0 {
             a = c;

@@ -90,15 +90,31 @@ impl ThermalViscosity {
     /// `Delta = ln(eta(p, T0 + theta) / eta(p, T0))` at dimensionless pressure `p` and a
     /// temperature rise `theta` (K). Exactly 0 at `theta = 0` and for a zero coefficient.
     pub fn delta_ln_eta(&self, p: f64, theta: f64) -> f64 {
+        self.delta_ln_eta_with(self.pressure_part(p), theta)
+    }
+
+    /// What [`ThermalViscosity::delta_ln_eta`] takes from the pressure alone: made once for
+    /// the temperatures a node's root tries (a Roelands power of the pressure each).
+    pub fn pressure_part(&self, p: f64) -> f64 {
         match *self {
             ThermalViscosity::Roelands {
                 viscosity,
                 ln_ratio,
-                t0_minus_inf_k,
-                s0,
+                ..
+            } => ln_ratio + viscosity.ln_eta_bar(p),
+            ThermalViscosity::Exponential { .. } => 0.0,
+        }
+    }
+
+    /// [`ThermalViscosity::delta_ln_eta`] from its [`ThermalViscosity::pressure_part`] (the
+    /// same arithmetic, so the same bits).
+    pub fn delta_ln_eta_with(&self, pressure_part: f64, theta: f64) -> f64 {
+        match *self {
+            ThermalViscosity::Roelands {
+                t0_minus_inf_k, s0, ..
             } => {
                 let r = t0_minus_inf_k / (t0_minus_inf_k + theta);
-                (ln_ratio + viscosity.ln_eta_bar(p)) * (r.powf(s0) - 1.0)
+                pressure_part * (r.powf(s0) - 1.0)
             }
             ThermalViscosity::Exponential { beta0 } => -beta0 * theta,
         }
