@@ -65,8 +65,8 @@ impl Flash {
     }
 
     /// [`Flash::upstream`] where `q` is zero before node `first`: the same sum, in the same
-    /// order, without its zero terms (the same bits; a strip whose heat starts at the
-    /// contact's inlet skips the nodes before it).
+    /// order, without its zero terms (the same bits). A strip sums its two surfaces at once
+    /// ([`Flash::upstream_pair`]), which is held to this sum bit for bit.
     pub fn upstream_from(&self, q: &[f64], i: usize, first: usize) -> f64 {
         let sum: f64 = (1..=i.saturating_sub(first))
             .map(|k| self.weights[k] * q[i - k])
