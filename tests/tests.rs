@@ -18,5 +18,6 @@ mod predict;
 mod revision;
 mod shards;
 mod support;
+mod tau_extrapolation;
 mod text;
 mod traction;

@@ -358,6 +358,7 @@ pub(super) fn solve_point(
         errors,
         coarser: Vec::new(),
         surroundings: None,
+        tau: None,
         patch: Some((top.patch.grid.domain(), top.patch.grid.hx)),
     })
 }

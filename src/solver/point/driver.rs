@@ -10,6 +10,7 @@ use super::cycles::level_number;
 use super::edge::settle_top;
 use super::level::LOAD;
 use super::nested::Surround;
+use super::tau;
 use super::{
     cold, friction, ladder, refine, warm, CoarseSolution, Params, PointSolution, Start, MAX_LEVEL,
     MIN_LEVEL,
@@ -122,7 +123,7 @@ pub(super) fn solve_with(
         (StartKind::Warm, Some(s)) => (s.coarser.clone(), s.outside),
         _ => (run_coarser, None),
     };
-    let (film, friction, errors, coarser) = loop {
+    let (film, friction, errors, coarser, tau) = loop {
         settle_top(
             &mut mg,
             params,
@@ -156,6 +157,11 @@ pub(super) fn solve_with(
                     residual_history: tally.history,
                 });
             }
+            // Before the ladder, which makes the coarser levels tops of their own.
+            let tau = params
+                .accuracy
+                .tau_extrapolation
+                .then(|| tau::extrapolated_outputs(&mut mg, params, g.moes_film_scale));
             // The ladder converges its levels the way the top one finally converged.
             let used = if newton_used {
                 Method::NewtonKrylov
@@ -176,7 +182,7 @@ pub(super) fn solve_with(
                 _ => false,
             };
             if !(missed && may_refine) {
-                break (film, friction, errors, coarser);
+                break (film, friction, errors, coarser, tau);
             }
             // The refined level's ladder starts from this level and the ones below it.
             let top = mg.levels.len() - 1;
@@ -221,5 +227,6 @@ pub(super) fn solve_with(
         coarser,
         surroundings: None,
         patch: None,
+        tau,
     })
 }

@@ -35,6 +35,7 @@ mod refine;
 mod relax;
 mod sequence;
 mod stopping;
+mod tau;
 mod transfer;
 mod warm;
 
@@ -55,6 +56,7 @@ pub use params::{
 };
 pub use refine::AccuracyTarget;
 use std::sync::Arc;
+pub use tau::TauExtrapolated;
 pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
@@ -96,6 +98,8 @@ pub struct PointSolution {
     /// The patch of a composite grid ([`Params::patch`]): its rectangle and mesh; the fields
     /// above are the whole domain's.
     pub patch: Option<(Domain, f64)>,
+    /// The final level's outputs tau-extrapolated ([`AccuracyParams::tau_extrapolation`]).
+    pub tau: Option<TauExtrapolated>,
 }
 
 /// Solves `problem` with `params` from the Hertzian pressure (full multigrid); `observer` (if

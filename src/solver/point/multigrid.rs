@@ -5,7 +5,7 @@ use super::far_field::FarField;
 use super::level::{LevelFields, Model, LOAD};
 use super::nested::Surround;
 use super::relax::{relax, LineScratch};
-use super::transfer::{coarsen, correct, interpolate_solution};
+use super::transfer::{coarsen, correct, interpolate_solution, scale_tau};
 use super::{Edge, Params};
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
@@ -158,6 +158,41 @@ impl Hierarchy {
         for _ in 0..self.params.multigrid.post_sweeps {
             self.relax(k);
         }
+    }
+
+    /// Tau-extrapolation of the converged top `k` ([`super::tau`]): its FAS coarse problem
+    /// with the relative truncation error scaled by `factor`, solved by `coarse_cycles`
+    /// cycles, its change added to the top without relaxing after it.
+    /// The coarser levels and the force balance's adaptation are put back as they were (the
+    /// extrapolation works on fresh coarse levels), so that what the solve does next with
+    /// them (its error ladder) is what it would have done without it.
+    pub fn tau_extrapolate(&mut self, k: usize, factor: f64, coarse_cycles: usize) {
+        let model = self.model;
+        let fresh: Vec<LevelFields> = self.levels[..k]
+            .iter()
+            .map(|level| LevelFields::new(level.grid, &model))
+            .collect();
+        let kept: Vec<LevelFields> = self.levels.splice(..k, fresh).collect();
+        let adaptation = (self.gain, self.last_defect);
+        {
+            let (lo, hi) = self.levels.split_at_mut(k);
+            let fine = &mut hi[0];
+            fine.refresh(self.delta, &model);
+            coarsen(fine, &mut lo[k - 1], &model, self.delta);
+            let far = &self.far;
+            let natural = |x: f64, y: f64| model.geometry(x, y) + far.film_offset(x, y);
+            scale_tau(fine, &mut lo[k - 1], natural, factor);
+        }
+        for _ in 0..coarse_cycles {
+            self.cycle(k - 1);
+        }
+        {
+            let (lo, hi) = self.levels.split_at_mut(k);
+            correct(&lo[k - 1], &mut hi[0]);
+        }
+        self.levels[k].refresh(self.delta, &model);
+        self.levels.splice(..k, kept);
+        (self.gain, self.last_defect) = adaptation;
     }
 
     /// Starts level `k` from the converged level `k - 1` (full multigrid).

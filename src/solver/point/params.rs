@@ -265,6 +265,11 @@ pub struct AccuracyParams {
     /// the refinements above). Default true; Table 4 turns it off at level 5, where the
     /// paper itself reports a film an order of magnitude too thin.
     pub require_positive_film: bool,
+    /// Also give the final level's outputs tau-extrapolated ([`super::TauExtrapolated`],
+    /// [`PointSolution::tau`](super::PointSolution::tau)): a measurement beside the solve,
+    /// which its own outputs, estimate and refinement do not read. Default false. On a chain of
+    /// nested domains it is the innermost domain's; the composite grid gives none.
+    pub tau_extrapolation: bool,
 }
 
 impl Default for AccuracyParams {
@@ -274,6 +279,7 @@ impl Default for AccuracyParams {
             target: None,
             refinement_levels: 1,
             require_positive_film: true,
+            tau_extrapolation: false,
         }
     }
 }
