@@ -37,7 +37,9 @@ fn main() {
         let clock = Instant::now();
         let line = match point::solve(&problem, &params, None) {
             Ok(s) => {
-                let tau = s.tau.unwrap_or(point::TauExtrapolated {
+                let tau = s.tau.clone().unwrap_or(point::TauExtrapolated {
+                    p: Vec::new(),
+                    h: Vec::new(),
                     film: s.film,
                     friction: s.friction,
                 });

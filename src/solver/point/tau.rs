@@ -30,8 +30,13 @@ const ORDER: u32 = 2;
 const COARSE_CYCLES: usize = 10;
 
 /// The top level's outputs from its tau-extrapolated coarse-grid correction.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TauExtrapolated {
+    /// The extrapolated pressure on the top's grid: its difference from the top's is the
+    /// local indicator of where the top's error is.
+    pub p: Vec<f64>,
+    /// The extrapolated film `H` on the top's grid.
+    pub h: Vec<f64>,
     /// Central and minimum film.
     pub film: Film,
     /// Reduced friction.
@@ -55,6 +60,8 @@ pub(super) fn extrapolated_outputs(
     mg.tau_extrapolate(top, factor, COARSE_CYCLES);
     let fine = mg.finest();
     let out = TauExtrapolated {
+        p: fine.p.clone(),
+        h: fine.h.clone(),
         film: friction::film(fine, moes_film_scale),
         friction: friction::friction(fine, &mg.model, mg.rolling_scale, params.friction.region),
     };
