@@ -6,6 +6,7 @@ mod cli;
 mod continuation;
 mod csv_columns;
 mod error_bracket;
+mod ladder_starts;
 mod line_contact;
 mod lss;
 mod lubricant;

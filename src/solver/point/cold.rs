@@ -119,7 +119,7 @@ pub(super) fn converge(
         }
         if !converged {
             starts.push(finest.best);
-            converged = grid_sequence(&mut mg, &starts, params, observe, &mut tally);
+            converged = grid_sequence(&mut mg, (&starts, &mut fmg), params, observe, &mut tally);
         }
     }
     if !converged {

@@ -2,7 +2,9 @@
 //! grid-sequenced from a coarser level's full-multigrid state.
 
 use super::converge::{converge_level, How, Tally};
+use super::cycles::level_number;
 use super::cycles::{StallWindows, State};
+use super::ladder::CoarseSolution;
 use super::multigrid::Hierarchy;
 use super::stopping::Known;
 use super::Params;
@@ -11,10 +13,14 @@ use crate::solver::output::Progress;
 /// The Newton-Krylov finish, grid-sequenced: level [`super::NewtonParams::start_level`] converged
 /// from its state in `starts` (its cycles, then Newton where they stall), then Newton on each finer
 /// level from the interpolated solution of the one below ([`converge_level`]), counted in `tally`.
+/// Each level below the finest that converges replaces its entry of `coarser` (the error
+/// ladder's starts, [`super::ladder`]) with its solution: the full-multigrid state of a case
+/// whose cycles fail can be far from it (5P4E, 40 C, 2 GPa, 7 m/s: level 6's ladder rung took
+/// 65 Newton-Krylov steps from that state and, where it failed, the injected finer solution).
 /// Whether the finest level converged.
 pub(super) fn grid_sequence(
     mg: &mut Hierarchy,
-    starts: &[State],
+    (starts, coarser): (&[State], &mut [CoarseSolution]),
     params: &Params,
     observe: &mut dyn FnMut(&Progress),
     tally: &mut Tally,
@@ -51,6 +57,14 @@ pub(super) fn grid_sequence(
         if converge_level(mg, k, params, &how, tally, observe).is_none() {
             converged = false;
             break;
+        }
+        if let Some(entry) = coarser.get_mut(k) {
+            *entry = CoarseSolution {
+                level: level_number(&mg.levels[k]),
+                p: mg.levels[k].p.clone(),
+                delta: mg.delta,
+                residual: Some(mg.residual_norm(k).0),
+            };
         }
     }
     tally.cycles = cycles;
