@@ -86,9 +86,10 @@ const LADDER_COARSEST_SWEEPS: usize = 20;
 /// share of their distance to `finer`, the next finer level's outputs
 /// ([`super::stopping::Known::finer`]). Where it fails from `warm`, it is converged again from
 /// the injected finer solution: Fig. 6's cases 41 and 50 in the paper's setup (5P4E, 40 C,
-/// 2 GPa, 7 and 12 m/s), cold bases finished by Newton-Krylov, do not converge level 6 from
-/// its full-multigrid state and do from injection. Returns the residual it converged to,
-/// `None` where it failed.
+/// 2 GPa, 7 and 12 m/s), cold bases finished by Newton-Krylov, did not converge level 6 from
+/// its full-multigrid state and did from injection (a cold solve's grid sequence now hands
+/// the ladder its converged levels instead, [`super::sequence::grid_sequence`]). Returns the
+/// residual it converged to, `None` where it failed.
 fn converge_rung(
     mg: &mut Hierarchy,
     k: usize,
