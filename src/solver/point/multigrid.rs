@@ -174,14 +174,13 @@ impl Hierarchy {
             .collect();
         let kept: Vec<LevelFields> = self.levels.splice(..k, fresh).collect();
         let adaptation = (self.gain, self.last_defect);
+        let natural = self.natural_film_rhs(&self.levels[k - 1].grid);
         {
             let (lo, hi) = self.levels.split_at_mut(k);
             let fine = &mut hi[0];
             fine.refresh(self.delta, &model);
             coarsen(fine, &mut lo[k - 1], &model, self.delta);
-            let far = &self.far;
-            let natural = |x: f64, y: f64| model.geometry(x, y) + far.film_offset(x, y);
-            scale_tau(fine, &mut lo[k - 1], natural, factor);
+            scale_tau(fine, &mut lo[k - 1], &natural, factor);
         }
         for _ in 0..coarse_cycles {
             self.cycle(k - 1);
@@ -216,12 +215,18 @@ impl Hierarchy {
                 level.invalidate();
             }
         }
+        let hrhs = self.natural_film_rhs(&self.levels[k].grid);
         let level = &mut self.levels[k];
-        let g = level.grid;
-        let far = &self.far;
-        level.hrhs = g.sample(|x, y| model.geometry(x, y) + far.film_offset(x, y));
+        level.hrhs = hrhs;
         level.f.iter_mut().for_each(|v| *v = 0.0);
         level.set_far_field(&self.far, self.delta);
+    }
+
+    /// The film equation's right-hand side of a top level on `grid`: the geometry and the far
+    /// field's film offset.
+    fn natural_film_rhs(&self, grid: &Grid) -> Vec<f64> {
+        let (model, far) = (&self.model, &self.far);
+        grid.sample(|x, y| model.geometry(x, y) + far.film_offset(x, y))
     }
 
     /// How far the far field on level `k`'s edge is from the one of the film constant as it

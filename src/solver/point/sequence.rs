@@ -2,8 +2,7 @@
 //! grid-sequenced from a coarser level's full-multigrid state.
 
 use super::converge::{converge_level, How, Tally};
-use super::cycles::level_number;
-use super::cycles::{StallWindows, State};
+use super::cycles::{level_number, StallWindows, State};
 use super::ladder::CoarseSolution;
 use super::multigrid::Hierarchy;
 use super::stopping::Known;

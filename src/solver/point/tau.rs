@@ -43,9 +43,9 @@ pub struct TauExtrapolated {
     pub friction: Friction,
 }
 
-/// The outputs of the converged top level `k` of `mg`, tau-extrapolated; `mg`'s top pressure
-/// and film constant as they were on return (its coarser levels hold the extrapolation's
-/// coarse problem).
+/// The outputs of the converged top level of `mg`, tau-extrapolated; `mg` as it was on return
+/// (its top's pressure and film constant put back here, its coarser levels and force-balance
+/// gain by [`Hierarchy::tau_extrapolate`]).
 pub(super) fn extrapolated_outputs(
     mg: &mut Hierarchy,
     params: &Params,

@@ -84,18 +84,17 @@ pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Mode
 /// Scales the relative truncation error in the coarse problem [`coarsen`] set up from a
 /// converged top `fine` by `factor` (tau-extrapolation, [`super::tau`]): the Reynolds
 /// right-hand side (the top's is zero, so the coarse one is `tau` itself), the film's shift
-/// from the top's `natural` right-hand side (the geometry and far field, as the top has it)
-/// and the force balance's quadrature difference.
+/// from the `natural` right-hand side a top on the coarse grid would have (the geometry and
+/// far field) and the force balance's quadrature difference.
 pub(crate) fn scale_tau(
     fine: &LevelFields,
     coarse: &mut LevelFields,
-    natural: impl Fn(f64, f64) -> f64,
+    natural: &[f64],
     factor: f64,
 ) {
     let gc = coarse.grid;
-    let natural = gc.sample(natural);
     coarse.f.iter_mut().for_each(|f| *f *= factor);
-    for (h, n) in coarse.hrhs.iter_mut().zip(&natural) {
+    for (h, n) in coarse.hrhs.iter_mut().zip(natural) {
         *h = n + factor * (*h - n);
     }
     let tau_g = fine.grid.integrate(&fine.p) - gc.integrate(&coarse.p);
