@@ -120,6 +120,9 @@ import repro
 
 sweep, cache, how = sys.argv[1:]
 heard = []
+# Python makes SIGINT KeyboardInterrupt only where it was not ignored at start-up, and a
+# background job of a shell (`cmd &`, nohup) starts with it ignored: Ctrl-C's handler here.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 
 def progress(done, total):
     heard.append(done)
