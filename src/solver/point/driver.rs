@@ -186,12 +186,7 @@ pub(super) fn solve_with(
             }
             // The refined level's ladder starts from this level and the ones below it.
             let top = mg.levels.len() - 1;
-            let finest = CoarseSolution {
-                level: level_number(&mg.levels[top]),
-                p: mg.levels[top].p.clone(),
-                delta: mg.delta,
-                residual: Some(mg.residual_norm(top).0),
-            };
+            let finest = CoarseSolution::converged(&mut mg, top);
             warm_coarser = std::iter::once(finest).chain(coarser).collect();
         }
         refinements += 1;

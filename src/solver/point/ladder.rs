@@ -44,6 +44,19 @@ pub struct CoarseSolution {
     pub residual: Option<f64>,
 }
 
+impl CoarseSolution {
+    /// Level `k` of `mg` as it converged, with its own residual: a refined level's or a grid
+    /// sequence's start of the same level of the ladder.
+    pub(super) fn converged(mg: &mut Hierarchy, k: usize) -> Self {
+        CoarseSolution {
+            level: level_number(&mg.levels[k]),
+            p: mg.levels[k].p.clone(),
+            delta: mg.delta,
+            residual: Some(mg.residual_norm(k).0),
+        }
+    }
+}
+
 /// The outputs of level `k` as it stands (those the stopping rule reads, the total friction
 /// in place of its rolling part).
 fn values(mg: &Hierarchy, k: usize, params: &Params) -> LevelValues {

@@ -2,7 +2,7 @@
 //! grid-sequenced from a coarser level's full-multigrid state.
 
 use super::converge::{converge_level, How, Tally};
-use super::cycles::{level_number, StallWindows, State};
+use super::cycles::{StallWindows, State};
 use super::ladder::CoarseSolution;
 use super::multigrid::Hierarchy;
 use super::stopping::Known;
@@ -58,12 +58,7 @@ pub(super) fn grid_sequence(
             break;
         }
         if let Some(entry) = coarser.get_mut(k) {
-            *entry = CoarseSolution {
-                level: level_number(&mg.levels[k]),
-                p: mg.levels[k].p.clone(),
-                delta: mg.delta,
-                residual: Some(mg.residual_norm(k).0),
-            };
+            *entry = CoarseSolution::converged(mg, k);
         }
     }
     tally.cycles = cycles;

@@ -32,9 +32,15 @@ pub(super) struct KeptFactor {
 /// A factor as the preconditioner of one system: its own, or a kept one mapped onto it.
 pub(super) struct Preconditioner {
     factor: KeptFactor,
+    /// `None` where the system's unknowns are the factor's.
+    map: Option<Map>,
+}
+
+/// A system's unknowns mapped onto a factor's.
+struct Map {
     /// Per unknown of the system (less `Delta`): the factor's unknown, `usize::MAX` for one
-    /// passed through; `None` where the system's unknowns are the factor's.
-    map: Option<Vec<usize>>,
+    /// passed through.
+    to_factor: Vec<usize>,
     /// The right-hand side and solution in the factor's unknowns.
     x: Vec<f64>,
     y: Vec<f64>,
@@ -57,7 +63,10 @@ impl KeptFactor {
         moved: bool,
     ) -> Result<Preconditioner, Box<LuStorage>> {
         if active == self.active.as_slice() && cavitating == self.cavitating.as_slice() {
-            return Ok(Preconditioner::new(self, None));
+            return Ok(Preconditioner {
+                factor: self,
+                map: None,
+            });
         }
         if !moved {
             return Err(Box::new(self.into_storage()));
@@ -67,7 +76,7 @@ impl KeptFactor {
         for (c, &k) in self.active.iter().enumerate() {
             own[k] = c;
         }
-        let map: Vec<usize> = active
+        let to_factor: Vec<usize> = active
             .iter()
             .zip(cavitating)
             .map(|(&k, &cav)| match own[k] {
@@ -75,26 +84,24 @@ impl KeptFactor {
                 _ => usize::MAX,
             })
             .collect();
-        let shared = map.iter().filter(|&&c| c != usize::MAX).count();
+        let shared = to_factor.iter().filter(|&&c| c != usize::MAX).count();
         let changed = (active.len() - shared) + (self.active.len() - shared);
         if changed as f64 > CHANGED_SHARE * active.len() as f64 {
             return Err(Box::new(self.into_storage()));
         }
-        Ok(Preconditioner::new(self, Some(map)))
+        let n = self.active.len() + 1;
+        Ok(Preconditioner {
+            factor: self,
+            map: Some(Map {
+                to_factor,
+                x: vec![0.0; n],
+                y: vec![0.0; n],
+            }),
+        })
     }
 }
 
 impl Preconditioner {
-    fn new(factor: KeptFactor, map: Option<Vec<usize>>) -> Self {
-        let n = factor.active.len() + 1;
-        Preconditioner {
-            factor,
-            map,
-            x: vec![0.0; n],
-            y: vec![0.0; n],
-        }
-    }
-
     /// A factor made for the system of `active` nodes (`cavitating` its identity rows).
     pub fn fresh(lu: BorderedLu, active: &[usize], cavitating: &[bool]) -> Self {
         let factor = KeptFactor {
@@ -102,28 +109,28 @@ impl Preconditioner {
             active: active.to_vec(),
             cavitating: cavitating.to_vec(),
         };
-        Preconditioner::new(factor, None)
+        Preconditioner { factor, map: None }
     }
 
     /// `out = M^-1 v` for the system's `v` (its unknowns, then `Delta`'s row).
     pub fn solve(&mut self, v: &[f64], out: &mut [f64]) {
-        let Some(map) = &self.map else {
+        let Some(map) = &mut self.map else {
             self.factor.lu.solve(v, out);
             return;
         };
-        let (n, nf) = (map.len(), self.factor.active.len());
-        self.x.fill(0.0);
-        for (b, &c) in map.iter().enumerate() {
+        let (n, nf) = (map.to_factor.len(), self.factor.active.len());
+        map.x.fill(0.0);
+        for (b, &c) in map.to_factor.iter().enumerate() {
             if c != usize::MAX {
-                self.x[c] = v[b];
+                map.x[c] = v[b];
             }
         }
-        self.x[nf] = v[n];
-        self.factor.lu.solve(&self.x, &mut self.y);
-        for (b, &c) in map.iter().enumerate() {
-            out[b] = if c != usize::MAX { self.y[c] } else { v[b] };
+        map.x[nf] = v[n];
+        self.factor.lu.solve(&map.x, &mut map.y);
+        for (b, &c) in map.to_factor.iter().enumerate() {
+            out[b] = if c != usize::MAX { map.y[c] } else { v[b] };
         }
-        out[n] = self.y[nf];
+        out[n] = map.y[nf];
     }
 
     /// The factor, to be kept for the next step.
