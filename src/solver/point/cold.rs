@@ -1,16 +1,16 @@
 //! The cold solve: full multigrid from the Hertzian pressure (or a nested domain's
-//! surroundings), the finest level's cycles, and where they stall the Newton-Krylov finish,
-//! directly or grid-sequenced ([`super::sequence`]).
+//! surroundings), then the finest level converged as every level is
+//! ([`super::converge::converge_level`]): its cycles, and where they stall the Newton-Krylov
+//! finish, directly or grid-sequenced ([`super::sequence`]).
 
-use super::converge::Tally;
-use super::cycles::{converge_by_cycles, cycle_progress, level_number, StallWindows, State};
-use super::finish::finish;
+use super::converge::{converge_level, AfterStall, How, Stalled, Tally};
+use super::cycles::{cycle_progress, level_number, StallWindows, State};
 use super::ladder::CoarseSolution;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::sequence::grid_sequence;
 use super::stopping::Known;
-use super::{Converged, Params};
+use super::Params;
 use crate::physics::case::Problem;
 use crate::physics::film::hc_eq10;
 use crate::solver::output::{Method, Progress, SolveError, StartKind};
@@ -22,6 +22,16 @@ use std::sync::Arc;
 /// 60 C, 3 GPa, 2 m/s at level 8), while the cycles of the very viscous cases stall at
 /// 1e-2 or diverge.
 const DIRECT_FINISH_RESIDUAL: f64 = 1e-3;
+
+/// What converged the top level, cold here or warm ([`super::warm`]): its cycles, history
+/// and Newton work, its method and start.
+pub(super) struct Converged {
+    pub(super) tally: Tally,
+    pub(super) method: Method,
+    pub(super) start: StartKind,
+    /// Starts of the coarser levels' solves for the error estimate ([`super::ladder`]).
+    pub(super) coarser: Vec<CoarseSolution>,
+}
 
 /// The cold solve's convergence on the top level: full multigrid from the Hertzian
 /// pressure, the finest level's cycles, and where they stall the Newton-Krylov finish
@@ -83,48 +93,44 @@ pub(super) fn converge(
     if top > 0 {
         mg.interpolate(top);
     }
-    let windows = StallWindows {
-        stall: params.multigrid.stall_cycles,
-        early: params.multigrid.early_stall_cycles,
-        weigh_alternation: false,
+    // The finest level's cycles, through the finish directly where they crept close to the
+    // solution (a heavily loaded case converging too slowly), else the grid sequence from
+    // the full multigrid's states and the cycles' best.
+    let known = Known::default();
+    let how = How {
+        cycles: true,
+        windows: StallWindows {
+            stall: params.multigrid.stall_cycles,
+            early: params.multigrid.early_stall_cycles,
+            weigh_alternation: false,
+        },
+        known: &known,
+        after_stall: AfterStall::FinishBelow(DIRECT_FINISH_RESIDUAL),
     };
-    let finest = converge_by_cycles(&mut mg, top, params, windows, &Known::default(), observe);
     let mut tally = Tally {
-        cycles: finest.history.len(),
         history,
         ..Tally::default()
     };
-    tally.history.extend(&finest.history);
-    let mut method = Method::Cycles;
-    let mut converged = finest.converged;
-    if !converged && params.newton.steps == 0 {
-        if let Some(cycle) = finest.non_finite {
-            return Err(SolveError::NonFinite {
-                what: "pressure or residual",
-                cycle,
-                residual_history: tally.history,
-            });
+    let method = match converge_level(&mut mg, top, params, &how, &mut tally, observe) {
+        Ok(method) => method,
+        Err(Stalled { non_finite, best }) => {
+            if params.newton.steps == 0 {
+                return Err(match non_finite {
+                    Some(cycle) => SolveError::NonFinite {
+                        what: "pressure or residual",
+                        cycle,
+                        residual_history: tally.history,
+                    },
+                    None => tally.not_converged(params),
+                });
+            }
+            starts.extend(best);
+            if !grid_sequence(&mut mg, (&starts, &mut fmg), params, observe, &mut tally) {
+                return Err(tally.not_converged(params));
+            }
+            Method::NewtonKrylov
         }
-    }
-    if !converged && params.newton.steps > 0 {
-        method = Method::NewtonKrylov;
-        // Cycles that crept close to the solution (a heavily loaded case converging too
-        // slowly) hand their best state to Newton on the finest level; otherwise, or where
-        // that fails, the grid sequence.
-        if finest.best_residual < DIRECT_FINISH_RESIDUAL {
-            finest.best.restore(&mut mg, top);
-            converged = tally
-                .work
-                .add(&finish(&mut mg, top, params, observe, &mut tally.history));
-        }
-        if !converged {
-            starts.push(finest.best);
-            converged = grid_sequence(&mut mg, (&starts, &mut fmg), params, observe, &mut tally);
-        }
-    }
-    if !converged {
-        return Err(tally.not_converged(params));
-    }
+    };
     Ok((
         mg,
         Converged {

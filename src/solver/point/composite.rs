@@ -26,7 +26,8 @@ use super::nested::Surround;
 pub use super::patch::{Patch, PatchSpec};
 use super::stopping::{Known, OUTPUT_TOLERANCE};
 use super::transfer::coarsen;
-use super::{solve_with, Params, PointSolution, Start, LOADED_FILM_FACTOR, MAX_LEVEL, MIN_LEVEL};
+use super::uniform::{self, level_to_resolve, observing};
+use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR, MAX_LEVEL, MIN_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{
@@ -185,7 +186,7 @@ fn run(
             outside: None,
             residual: params.stopping.tolerance,
         };
-        let sol = solve_with(
+        let sol = uniform::solve(
             problem,
             (&patch_params, Some(&surround)),
             Some(&start),
@@ -226,7 +227,7 @@ fn run(
         } else {
             let known = Known::default();
             let how = How::from_converged(&wide, &known);
-            if converge_level(&mut mg, top, &wide, &how, &mut tally, observe).is_none() {
+            if converge_level(&mut mg, top, &wide, &how, &mut tally, observe).is_err() {
                 return Err(tally.not_converged(&wide));
             }
         }
@@ -262,7 +263,7 @@ pub(super) fn solve_point(
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
     let clock = Instant::now();
-    let mut observe = super::observing(observer);
+    let mut observe = observing(observer);
     // The levels below as far as the patch keeps a grid of its own (level 3).
     let levels = params
         .accuracy
@@ -289,7 +290,7 @@ pub(super) fn solve_point(
         return Err(SolveError::FilmCollapse {
             h_min: last.h_min,
             level: params.level,
-            level_needed: Some(super::level_to_resolve(problem, params.level, last.h_min)),
+            level_needed: Some(level_to_resolve(problem, params.level, last.h_min)),
             finest_level: MAX_LEVEL,
             cycle: top.tally.cycles,
             residual_history: top.tally.history,

@@ -1,13 +1,18 @@
 //! One way to converge a level as the top of the hierarchy: its multigrid cycles, and where
-//! they fail, the Newton-Krylov finish from the better of their best state and the level's
-//! start, with a second try (the cycles relax the finish's state, then Newton again) where
-//! that stalls. Every path of the point solver converges its levels here: a warm start
+//! they fail, the Newton-Krylov finish. Every path of the point solver converges its levels
+//! here: the cold solve's finest level after full multigrid ([`super::cold`]), a warm start
 //! ([`super::warm`]), the far field's settling ([`super::edge`]), a refined level
 //! ([`super::refine`]), the coarser levels of the error estimate ([`super::ladder`]) and the
-//! levels of the grid sequence ([`super::sequence`]); the cold solve's full
-//! multigrid cycles its finest level here too.
+//! levels of the grid sequence ([`super::sequence`]).
+//!
+//! What follows cycles that did not converge depends on where the level started
+//! ([`AfterStall`]): from a converged solution, or one interpolated from it, the finish starts
+//! from the better of the cycles' best state and the start, with a second try where it stalls
+//! (the cycles relax the finish's state, then Newton again); from full multigrid, the finish
+//! starts on the level only where the cycles crept close to the solution, and otherwise the
+//! cold solve hands their best state to the grid sequence.
 
-use super::cycles::{converge_by_cycles, StallWindows, State};
+use super::cycles::{converge_by_cycles, Cycles, StallWindows, State};
 use super::finish::finish;
 use super::multigrid::Hierarchy;
 use super::newton;
@@ -61,6 +66,29 @@ pub(super) struct How<'a> {
     /// What stops them besides the residual ([`Known`]: a warm start's outputs, a finer
     /// level's).
     pub(super) known: &'a Known,
+    /// What follows cycles that did not converge.
+    pub(super) after_stall: AfterStall,
+}
+
+/// What [`converge_level`] does after cycles that did not converge.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum AfterStall {
+    /// The Newton-Krylov finish from the better of the cycles' best state (where they stayed
+    /// finite) and the level's start; where that stalls, [`polish_and_finish`]. For a level
+    /// that starts from a converged solution or one interpolated from it.
+    BetterOfStart,
+    /// The finish from the cycles' best state where its residual is below this, once; else
+    /// (or where it fails) the level is left to its caller with that state
+    /// ([`Stalled::best`]). For the cold solve's finest level after full multigrid
+    /// ([`super::cold`]), whose cycles far from the solution stall at 1e-2 or diverge.
+    FinishBelow(f64),
+}
+
+/// A level that did not converge: the best state of its cycles, where [`AfterStall::FinishBelow`]
+/// hands it on, and the cycle at which a non-finite value appeared, where one did.
+pub(super) struct Stalled {
+    pub(super) best: Option<State>,
+    pub(super) non_finite: Option<usize>,
 }
 
 impl<'a> How<'a> {
@@ -76,6 +104,7 @@ impl<'a> How<'a> {
                 weigh_alternation: true,
             },
             known,
+            after_stall: AfterStall::BetterOfStart,
         }
     }
 
@@ -89,9 +118,8 @@ impl<'a> How<'a> {
 }
 
 /// Converges level `k` (the top) from its current state as `how` says, counting into
-/// `tally`: the cycles; where they fail, Newton-Krylov (if [`super::NewtonParams::steps`] allows)
-/// from the better of the cycles' best state, where they stayed finite, and the start; where
-/// that stalls, [`polish_and_finish`]. How it converged, `None` where it did not.
+/// `tally`: the cycles; where they fail, Newton-Krylov (if [`super::NewtonParams::steps`]
+/// allows) as [`How::after_stall`] says. How it converged, or how it did not.
 pub(super) fn converge_level(
     mg: &mut Hierarchy,
     k: usize,
@@ -99,14 +127,18 @@ pub(super) fn converge_level(
     how: &How,
     tally: &mut Tally,
     observe: &mut dyn FnMut(&Progress),
-) -> Option<Method> {
+) -> Result<Method, Stalled> {
+    let mut non_finite = None;
     if how.cycles {
         let start = State::of(mg, k);
         let run = converge_by_cycles(mg, k, params, how.windows, how.known, observe);
         tally.cycles += run.history.len();
         tally.history.extend(&run.history);
         if run.converged {
-            return Some(Method::Cycles);
+            return Ok(Method::Cycles);
+        }
+        if let AfterStall::FinishBelow(limit) = how.after_stall {
+            return finish_from_best(mg, k, params, (run, limit), tally, observe);
         }
         // The start's residual is measured only here, where it is needed.
         start.restore(mg, k);
@@ -114,13 +146,46 @@ pub(super) fn converge_level(
         if run.non_finite.is_none() && run.best_residual < start_residual {
             run.best.restore(mg, k);
         }
+        non_finite = run.non_finite;
     }
     let converged = params.newton.steps > 0
         && (tally
             .work
             .add(&finish(mg, k, params, observe, &mut tally.history))
             || polish_and_finish(mg, k, params, observe, tally));
-    converged.then_some(Method::NewtonKrylov)
+    if converged {
+        Ok(Method::NewtonKrylov)
+    } else {
+        Err(Stalled {
+            best: None,
+            non_finite,
+        })
+    }
+}
+
+/// [`AfterStall::FinishBelow`]: the finish on level `k` from the best state of `run` where its
+/// residual is below `limit`; where it is not, or the finish fails, that state handed back.
+fn finish_from_best(
+    mg: &mut Hierarchy,
+    k: usize,
+    params: &Params,
+    (run, limit): (Cycles, f64),
+    tally: &mut Tally,
+    observe: &mut dyn FnMut(&Progress),
+) -> Result<Method, Stalled> {
+    if params.newton.steps > 0 && run.best_residual < limit {
+        run.best.restore(mg, k);
+        if tally
+            .work
+            .add(&finish(mg, k, params, observe, &mut tally.history))
+        {
+            return Ok(Method::NewtonKrylov);
+        }
+    }
+    Err(Stalled {
+        best: Some(run.best),
+        non_finite: run.non_finite,
+    })
 }
 
 /// A second try on level `k` after its Newton-Krylov finish stalled: the cycles relax its

@@ -1,227 +1,54 @@
-//! The driver of a solve on one grid: the top level converged warm (from a related case's
-//! solution) or cold (full multigrid from the Hertzian pressure), then, level by level, its
-//! edge settled, the film checked, the outputs' error estimated by the ladder of coarser
-//! levels, and a finer level added where the film closes or the estimate misses the accuracy
-//! target ([`super::AccuracyParams`]). The nested chain ([`super::chain`]) and the composite
-//! grid ([`super::composite`]) call it for each of their grids.
+//! The driver: which strategy covers the contact, then its solve. A uniform grid
+//! ([`super::uniform`]) is the solver's own loop: converge the top level warm or cold, settle
+//! its edge, check the film, estimate the outputs' error by the ladder of coarser levels, and
+//! refine where the film closes or the estimate misses the target. The nested chain
+//! ([`super::chain`]) runs that loop on each of its domains, the case-sized one first, and
+//! estimates over whole chains at coarser levels; the composite grid ([`super::composite`])
+//! runs it on its patch inside rounds that couple the patch with the whole domain.
 
-use super::converge::Tally;
-use super::cycles::level_number;
-use super::edge::settle_top;
-use super::level::LOAD;
-use super::nested::Surround;
-use super::tau;
-use super::{
-    cold, friction, ladder, refine, warm, CoarseSolution, Params, PointSolution, Start, MAX_LEVEL,
-    MIN_LEVEL,
-};
+use super::composite::PatchSpec;
+use super::{chain, composite, uniform, Params, PointSolution, Start};
 use crate::physics::case::Problem;
-use crate::physics::film::hc_nijenbanning;
-use crate::solver::output::{Info, Method, Progress, SolveError, StartKind};
-use std::sync::Arc;
-use std::time::Instant;
+use crate::solver::output::{Progress, SolveError};
 
-/// The level estimated to resolve the film of `problem` whose minimum film came out as
-/// `h_min <= 0` (in `h/c`) at `level`: the film's grid error (the expected minimum film less
-/// `h_min`) falls like `4^-level` (second order), and the level is the first where it is
-/// below half the expected minimum film, taken as half the Nijenbanning-Venner-Moes central
-/// film (the heavily loaded contacts' minimum film is 0.5-0.7 of the central one).
-pub fn level_to_resolve(problem: &Problem, level: u32, h_min: f64) -> u32 {
-    let g = &problem.groups;
-    let expected = 0.5 * hc_nijenbanning(g.m, g.l, g.d) / g.moes_film_scale;
-    let error = expected - h_min;
-    let halvings = ((2.0 * error / expected).ln() / 4f64.ln()).ceil().max(1.0);
-    level + halvings as u32
+/// How a solve covers the contact ([`Params::patch`], [`Params::nested`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) enum Strategy<'a> {
+    /// One grid over the domain at a uniform mesh.
+    Uniform,
+    /// The domain and rectangles nested inside it down to the contact's core, each at the
+    /// same level inside the solution around it.
+    Nested,
+    /// The domain and a patch at half its mesh, coupled both ways.
+    Composite(&'a PatchSpec),
 }
 
-/// `observer` as a closure that hears every step, or none where there is no observer.
-pub(super) fn observing<'a>(
-    mut observer: Option<&'a mut dyn FnMut(&Progress)>,
-) -> impl FnMut(&Progress) + 'a {
-    move |p| {
-        if let Some(o) = observer.as_mut() {
-            o(p)
+impl<'a> Strategy<'a> {
+    /// The strategy `params` ask for: a patch where they give one, else the chain where they
+    /// ask for nesting and the domain has rectangles inside it ([`chain::rectangles`]), else
+    /// the uniform grid.
+    pub(super) fn of(params: &'a Params) -> Self {
+        match &params.patch {
+            Some(spec) => Strategy::Composite(spec),
+            None if params.nested && !chain::rectangles(&params.domain).is_empty() => {
+                Strategy::Nested
+            }
+            None => Strategy::Uniform,
         }
     }
 }
 
-/// What converged the top level: its cycles, history and Newton work, and its method.
-pub(super) struct Converged {
-    pub(super) tally: Tally,
-    pub(super) method: Method,
-    pub(super) start: StartKind,
-    /// Starts of the coarser levels' solves for the error estimate ([`ladder`]).
-    pub(super) coarser: Vec<CoarseSolution>,
-}
-
-/// Solves `problem` on one grid (inside `surround`, where given) from `warm_start` where it
-/// fits and converges, else cold; then settles, checks, estimates and refines (the module's
-/// documentation).
-pub(super) fn solve_with(
+/// Solves `problem` with `params` by their strategy, from `start` where given and the
+/// strategy uses one (the composite solves cold).
+pub(super) fn solve(
     problem: &Problem,
-    (params, surround): (&Params, Option<&Arc<Surround>>),
-    warm_start: Option<&Start>,
+    params: &Params,
+    start: Option<&Start>,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    let start = Instant::now();
-    SolveError::check_level(params.level, MIN_LEVEL..=MAX_LEVEL)?;
-    if params.multigrid.coarsest_level < 2 || params.multigrid.gamma == 0 {
-        return Err(SolveError::InvalidParams(format!(
-            "coarsest level {} must be at least 2, gamma {} positive",
-            params.multigrid.coarsest_level, params.multigrid.gamma
-        )));
+    match Strategy::of(params) {
+        Strategy::Composite(spec) => composite::solve_point(problem, params, spec, observer),
+        Strategy::Nested => chain::solve_point(problem, params, start, observer),
+        Strategy::Uniform => uniform::solve(problem, (params, None), start, observer),
     }
-    let params = &{
-        let mut clamped = params.clone();
-        clamped.multigrid.coarsest_level = params.multigrid.coarsest_level.min(params.level);
-        clamped
-    };
-    let g = &problem.groups;
-    let mut observe = observing(observer);
-    // A warm start that fits converges on its own level (a base refined to a finer level
-    // takes the member there, with the refinements it has left); where it fails, the cold
-    // solve from the Hertzian pressure, its attempt kept in the history.
-    let warm_params = warm_start
-        .filter(|s| s.fits(params))
-        .map(|s| (s, warm::params_at(params, s.level)));
-    let mut tried = Vec::new();
-    let warm_run = warm_params
-        .as_ref()
-        .and_then(|(s, p)| warm::converge(problem, (p, surround), s, &mut observe, &mut tried));
-    let (params, mut mg, run) = match (warm_run, &warm_params) {
-        (Some((mg, run)), Some((_, p))) => (p, mg, run),
-        _ => {
-            let (mg, mut run) = cold::converge(problem, (params, surround), &mut observe, tried)?;
-            if warm_params.is_some() {
-                run.start = StartKind::Fallback;
-            }
-            (params, mg, run)
-        }
-    };
-    let Converged {
-        mut tally,
-        mut method,
-        start: start_kind,
-        coarser: run_coarser,
-    } = run;
-    // Whether a round of the edge needed Newton-Krylov: reported, while the refinement
-    // below goes by how the level converged in the first place.
-    let mut newton_used = false;
-
-    // Each level, once converged, has its edge settled ([`edge::settle_edge`]). A film that closes
-    // somewhere (the side lobes of the most heavily loaded contacts, M above ~5000, where the
-    // film is a thousandth of the Hertzian approach and the grid's error in the deformation
-    // at the contact edge exceeds it), or outputs whose estimated discretisation error misses
-    // the accuracy target ([`AccuracyParams::target`]), then ask for a finer grid ([`refine`]),
-    // within [`AccuracyParams::refinement_levels`]. The refined level's ladder starts from the
-    // levels below as they converged.
-    let mut refinements = 0;
-    let (mut warm_coarser, outside_at_base) = match (start_kind, warm_start) {
-        // The coarser levels start from the base's where the member started from it, and
-        // stop where the base's did outside the asymptotic range; else they start from the
-        // full-multigrid states of the cold solve.
-        (StartKind::Warm, Some(s)) => (s.coarser.clone(), s.outside),
-        _ => (run_coarser, None),
-    };
-    let (film, friction, errors, coarser, tau) = loop {
-        settle_top(
-            &mut mg,
-            params,
-            (method, &mut newton_used),
-            &mut tally,
-            &mut observe,
-        )?;
-        let may_refine = refinements < params.accuracy.refinement_levels
-            && level_number(mg.finest()) < MAX_LEVEL;
-        let film = friction::film(mg.finest(), g.moes_film_scale);
-        let closed = film.h_min <= 0.0;
-        if !(params.accuracy.require_positive_film && closed && may_refine) {
-            let fine = mg.finest();
-            if params.accuracy.require_positive_film && closed {
-                let level = level_number(fine);
-                return Err(SolveError::FilmCollapse {
-                    h_min: film.h_min,
-                    level,
-                    level_needed: Some(level_to_resolve(problem, level, film.h_min)),
-                    finest_level: MAX_LEVEL,
-                    cycle: tally.cycles,
-                    residual_history: tally.history,
-                });
-            }
-            let friction =
-                friction::friction(fine, &mg.model, mg.rolling_scale, params.friction.region);
-            if !friction.sliding.is_finite() || !friction.total().is_finite() {
-                return Err(SolveError::NonFinite {
-                    what: "friction",
-                    cycle: tally.cycles,
-                    residual_history: tally.history,
-                });
-            }
-            // Before the ladder, which makes the coarser levels tops of their own.
-            let tau = params
-                .accuracy
-                .tau_extrapolation
-                .then(|| tau::extrapolated_outputs(&mut mg, params, g.moes_film_scale));
-            // The ladder converges its levels the way the top one finally converged.
-            let used = if newton_used {
-                Method::NewtonKrylov
-            } else {
-                method
-            };
-            let (errors, coarser) = if params.accuracy.error_levels > 0 {
-                let warm = (warm_coarser.as_slice(), outside_at_base);
-                let (e, c) = ladder::output_errors(&mut mg, params, used, warm, &mut observe);
-                (Some(e), c)
-            } else {
-                (None, Vec::new())
-            };
-            // Only a level its cycles converged: a refined level's Newton-Krylov finish costs
-            // 4-5 s a step at level 8 and converges linearly there (docs/SOLVER.md).
-            let missed = match (&params.accuracy.target, &errors) {
-                (Some(target), Some(e)) => method == Method::Cycles && !target.met_by(e, g.m),
-                _ => false,
-            };
-            if !(missed && may_refine) {
-                break (film, friction, errors, coarser, tau);
-            }
-            // The refined level's ladder starts from this level and the ones below it.
-            let top = mg.levels.len() - 1;
-            let finest = CoarseSolution::converged(&mut mg, top);
-            warm_coarser = std::iter::once(finest).chain(coarser).collect();
-        }
-        refinements += 1;
-        method = refine::refine(&mut mg, params, method, &mut tally, &mut observe)?;
-    };
-    if newton_used {
-        method = Method::NewtonKrylov;
-    }
-    let fine = mg.finest();
-    let load_error = (fine.load_defect() / LOAD).abs();
-    let (grid, p, h, delta) = (fine.grid, fine.p.clone(), fine.h.clone(), mg.delta);
-    let level = level_number(fine);
-    Ok(PointSolution {
-        grid,
-        p,
-        h,
-        delta,
-        film,
-        friction,
-        friction_region: params.friction.region,
-        info: Info {
-            level,
-            method,
-            cycles: tally.cycles,
-            newton_steps: tally.work.newton_steps,
-            krylov_iterations: tally.work.krylov_iterations,
-            residual_history: tally.history,
-            load_error,
-            seconds: start.elapsed().as_secs_f64(),
-            start: start_kind,
-        },
-        errors,
-        coarser,
-        surroundings: None,
-        patch: None,
-        tau,
-    })
 }

@@ -46,9 +46,9 @@ pub(super) fn settle_edge(
         mg.make_top(k);
         let how = How::as_by(method, params, &known);
         match converge_level(mg, k, params, &how, tally, observe) {
-            Some(Method::Cycles) => {}
-            Some(_) => *newton_used = true,
-            None => return false,
+            Ok(Method::Cycles) => {}
+            Ok(_) => *newton_used = true,
+            Err(_) => return false,
         }
     }
     true

@@ -146,7 +146,7 @@ fn converge_rung(
         // Its tallies are not the solve's: the ladder reports its time, not its cycles.
         let mut tally = Tally::default();
         let how = How::as_by(method, params, &known);
-        let used = converge_level(mg, k, params, &how, &mut tally, observe)?;
+        let used = converge_level(mg, k, params, &how, &mut tally, observe).ok()?;
         let mut newton_used = false;
         settle_edge(mg, k, params, (used, &mut newton_used), &mut tally, observe)
             .then(|| mg.residual_norm(k).0)

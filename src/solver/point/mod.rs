@@ -31,19 +31,19 @@ pub mod nested;
 mod newton;
 mod params;
 mod patch;
+mod rectangles;
 mod refine;
 mod relax;
 mod sequence;
 mod stopping;
 mod tau;
 mod transfer;
+mod uniform;
 mod warm;
 
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{Film, Friction, Info, OutputErrors, Progress, SolveError};
-pub use driver::level_to_resolve;
-use driver::{observing, solve_with, Converged};
 pub use friction::{mean_shear_stress, FrictionRegion, LOADED_FILM_FACTOR};
 pub use ladder::CoarseSolution;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
@@ -57,6 +57,7 @@ pub use params::{
 pub use refine::AccuracyTarget;
 use std::sync::Arc;
 pub use tau::TauExtrapolated;
+pub use uniform::level_to_resolve;
 pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
@@ -109,7 +110,7 @@ pub fn solve(
     params: &Params,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    solve_any(problem, params, None, observer)
+    driver::solve(problem, params, None, observer)
 }
 
 /// Solves `problem` with `params` from `start`, the converged solution of a related case (its
@@ -122,7 +123,7 @@ pub fn solve_from(
     start: &Start,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    solve_any(problem, params, Some(start), observer)
+    driver::solve(problem, params, Some(start), observer)
 }
 
 /// Solves `problem` with `params` on a nested domain (`params.domain`, its edges on grid lines
@@ -135,22 +136,5 @@ pub fn solve_nested(
     surround: &Arc<Surround>,
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
-    solve_with(problem, (params, Some(surround)), None, observer)
-}
-
-/// [`solve`] and [`solve_from`]: on the chain of nested domains where the parameters ask
-/// for it and the domain has rectangles ([`Params::nested`]), else on the one domain.
-fn solve_any(
-    problem: &Problem,
-    params: &Params,
-    start: Option<&Start>,
-    observer: Option<&mut dyn FnMut(&Progress)>,
-) -> Result<PointSolution, SolveError> {
-    if let Some(spec) = &params.patch {
-        return composite::solve_point(problem, params, spec, observer);
-    }
-    if params.nested && !chain::rectangles(&params.domain).is_empty() {
-        return chain::solve_point(problem, params, start, observer);
-    }
-    solve_with(problem, (params, None), start, observer)
+    uniform::solve(problem, (params, Some(surround)), None, observer)
 }

@@ -333,7 +333,7 @@ impl Params {
             level,
             domain,
             edge: Edge::FarField,
-            nested: !super::chain::rectangles(&domain).is_empty(),
+            nested: !super::rectangles::rectangles(&domain).is_empty(),
             friction: FrictionParams {
                 region: FrictionRegion::LoadedFilm,
                 ..FrictionParams::default()

@@ -101,7 +101,7 @@ pub(super) fn refine(
         tally,
         observe,
     )
-    .ok_or_else(|| tally.not_converged(params))
+    .map_err(|_| tally.not_converged(params))
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! The cold solve's way out where its finest level's cycles fail: the Newton-Krylov finish
 //! grid-sequenced from a coarser level's full-multigrid state.
 
-use super::converge::{converge_level, How, Tally};
+use super::converge::{converge_level, AfterStall, How, Tally};
 use super::cycles::{StallWindows, State};
 use super::ladder::CoarseSolution;
 use super::multigrid::Hierarchy;
@@ -52,8 +52,9 @@ pub(super) fn grid_sequence(
                 weigh_alternation: false,
             },
             known: &known,
+            after_stall: AfterStall::BetterOfStart,
         };
-        if converge_level(mg, k, params, &how, tally, observe).is_none() {
+        if converge_level(mg, k, params, &how, tally, observe).is_err() {
             converged = false;
             break;
         }

@@ -17,12 +17,13 @@
 //! where it no longer falls ([`super::stopping::WarmStop`]: a warm start begins near its fixed point; without it the
 //! heaviest members, M 11 070, took a Newton-Krylov detour and were slower than cold).
 
+use super::cold::Converged;
 use super::converge::{converge_level, How, Tally};
 use super::cycles::stop_outputs;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::stopping::{Known, WarmStop};
-use super::{Converged, Params, MAX_LEVEL};
+use super::{Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{LadderStop, Method, Progress, StartKind};
@@ -123,7 +124,7 @@ pub(super) fn converge(
     };
     let mut tally = Tally::default();
     let how = How::as_by(start.method, params, &known);
-    let Some(method) = converge_level(&mut mg, top, params, &how, &mut tally, observe) else {
+    let Ok(method) = converge_level(&mut mg, top, params, &how, &mut tally, observe) else {
         tried.extend(tally.history);
         return None;
     };
