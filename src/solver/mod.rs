@@ -22,10 +22,8 @@ pub mod thermal;
 /// count) a Slurm task on one CPU and a two-core workstation gave a case different digits.
 /// One thread gives the same bits everywhere, and it is also the faster choice: with a
 /// degree of 2 the split's scheduling (threads spinning in `sched_yield`, freshly mapped
-/// buffers) cost more than the second core saved. The M = 19 205
-/// case at level 8 took 48.5 s wall and 57.7 s CPU on two threads, 43.7 s and 43.7 s on one;
-/// three 5P4E and traction-fluid cases 17-30 % less CPU, and less wall time too. A sweep
-/// runs cases side by side on every core anyway.
+/// buffers) cost more than the second core saved (docs/ACCURACY_NOTES.md, "The Newton-Krylov
+/// step"), and a sweep runs cases side by side on every core anyway.
 pub(crate) fn fix_factorisation_parallelism() {
     static FIXED: std::sync::Once = std::sync::Once::new();
     FIXED.call_once(|| faer::set_global_parallelism(faer::Par::Seq));

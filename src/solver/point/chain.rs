@@ -6,15 +6,14 @@
 //! levels, whose meshes halve together, so that the surroundings' own error is part of it
 //! (docs/ACCURACY_NOTES.md, "Resolution where the contact needs it").
 
+use super::ladder;
 use super::nested::Surround;
 pub use super::rectangles::{rectangles, snap, CORE, SHRINK};
 use super::uniform::{self, observing};
 use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR};
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::{
-    Friction, LadderStop, LevelValues, Method, OutputErrors, Progress, SolveError,
-};
+use crate::solver::output::{Friction, LevelValues, Method, OutputErrors, Progress, SolveError};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -193,33 +192,18 @@ pub(super) fn solve_point(
 }
 
 /// The discretisation error of `chain` (at `params.level`): the chains at the `levels`
-/// levels below, each solved cold on its own, and its own values. A level that fails ends
-/// the estimate there ([`LadderStop::NotConverged`]).
+/// levels below, each solved cold on its own, and its own values ([`ladder::by_solving_again`]).
 fn chain_errors(problem: &Problem, params: &Params, chain: &Chain, levels: u32) -> OutputErrors {
-    let clock = Instant::now();
-    let mut values = Vec::new();
-    let mut stopped = None;
-    for level in params.level.saturating_sub(levels)..params.level {
-        match solve_chain(
-            problem,
-            &Params {
-                level,
-                ..params.clone()
-            },
-        ) {
-            Ok(c) => values.push(c.level_values(problem)),
-            Err(_) => {
-                values.clear();
-                stopped = Some(LadderStop::NotConverged { level });
-            }
-        }
-    }
-    values.push(chain.level_values(problem));
-    OutputErrors {
-        levels: values,
-        seconds: clock.elapsed().as_secs_f64(),
-        stopped,
-    }
+    let below = params.level.saturating_sub(levels)..params.level;
+    ladder::by_solving_again(below, chain.level_values(problem), |level| {
+        let at = Params {
+            level,
+            ..params.clone()
+        };
+        solve_chain(problem, &at)
+            .ok()
+            .map(|c| c.level_values(problem))
+    })
 }
 
 /// [`solve_chain`] at `params.level` and its error estimate over the chains at the `levels`

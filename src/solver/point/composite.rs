@@ -21,18 +21,18 @@
 
 use super::cold;
 use super::converge::{converge_level, How, Tally};
+use super::ladder;
 use super::level::{LevelFields, Model, LOAD};
 use super::nested::Surround;
 pub use super::patch::{Patch, PatchSpec};
 use super::stopping::{Known, OUTPUT_TOLERANCE};
 use super::transfer::coarsen;
-use super::uniform::{self, level_to_resolve, observing};
+use super::uniform::{self, film_collapse, observing};
 use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR, MAX_LEVEL, MIN_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
 use crate::solver::output::{
-    Film, Friction, Info, LadderStop, LevelValues, Method, OutputErrors, Progress, SolveError,
-    StartKind,
+    Film, Friction, Info, LevelValues, Method, Progress, SolveError, StartKind,
 };
 use std::sync::Arc;
 use std::time::Instant;
@@ -287,14 +287,7 @@ pub(super) fn solve_point(
     // A closed film is refused before the estimate is paid for.
     let last = top.rounds.last().expect("a round");
     if params.accuracy.require_positive_film && last.h_min <= 0.0 {
-        return Err(SolveError::FilmCollapse {
-            h_min: last.h_min,
-            level: params.level,
-            level_needed: Some(level_to_resolve(problem, params.level, last.h_min)),
-            finest_level: MAX_LEVEL,
-            cycle: top.tally.cycles,
-            residual_history: top.tally.history,
-        });
+        return Err(film_collapse(problem, params.level, last.h_min, top.tally));
     }
     let values = |r: &Run, level: u32| {
         let last = r.rounds.last().expect("a round");
@@ -307,28 +300,17 @@ pub(super) fn solve_point(
         }
     };
     let errors = (levels > 0).then(|| {
-        let ladder = Instant::now();
-        let mut below = Vec::new();
-        let mut stopped = None;
-        for level in coarsest..params.level {
+        let below = coarsest..params.level;
+        ladder::by_solving_again(below, values(&top, params.level), |level| {
             let coarser = Params {
                 level,
                 ..params.clone()
             };
             match run(problem, &coarser, &at(level), MAX_ROUNDS, &mut observe) {
-                Ok(r) if r.settled => below.push(values(&r, level)),
-                _ => {
-                    below.clear();
-                    stopped = Some(LadderStop::NotConverged { level });
-                }
+                Ok(r) if r.settled => Some(values(&r, level)),
+                _ => None,
             }
-        }
-        below.push(values(&top, params.level));
-        OutputErrors {
-            levels: below,
-            seconds: ladder.elapsed().as_secs_f64(),
-            stopped,
-        }
+        })
     });
     let friction = last.friction;
     let film = Film {

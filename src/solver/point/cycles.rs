@@ -18,11 +18,8 @@ pub(super) struct StallWindows {
     /// On for a level started from a converged solution (a refined level, a warm start, the
     /// edge's rounds, the error ladder's levels: `converge::How::from_converged`), where the
     /// three families of [`DAMPED_CORRECTION`] alternated. Off for the cold solve's finest
-    /// cycles and the grid sequence: Fig. 6 case 23's cold level 7 (a nested chain's
-    /// case-sized domain) alternated from its 19th cycle and, weighted, converged by cycles
-    /// instead of Newton-Krylov, but its rectangles then tried cycles before their
-    /// Newton-Krylov finish and took 43 Newton steps instead of 24 (14.4 s user against
-    /// 11.5 s).
+    /// cycles and the grid sequence, where weighting made a nested chain slower
+    /// (docs/ACCURACY_NOTES.md, "Why the new level-8 solves needed Newton-Krylov").
     pub(super) weigh_alternation: bool,
 }
 

@@ -85,11 +85,8 @@ fn inject(mg: &mut Hierarchy, k: usize) {
 /// Relaxations per visit of the coarsest grid when a coarser level of the ladder is the top (the
 /// top level's cycles keep [`super::MultigridParams::coarsest_sweeps`], 50). The coarsest visit is
 /// a fixed cost per cycle, 50 sweeps of 33 x 33 nodes: about 11 % of a level-7 cycle, but 36 % of a
-/// level-6 and 80 % of a level-5 one (node counts). The parameter's own study found 50 sweeps
-/// instead of 100 a third cheaper at level 5 for the same cycles; 20 instead of 50 on the ladder of
-/// Fig. 3's 125 cases at level 7 took 0.4 more cycles per level-6 and 0.5 per level-5 solve and cut
-/// the ladder's time by a quarter (18.6 s to 14.0 s); 10 sweeps took 3.4 and 6.3 more cycles and
-/// saved nothing.
+/// level-6 and 80 % of a level-5 one (node counts); 20 cut the ladder's time by a quarter for half
+/// a cycle more per level (docs/ACCURACY_NOTES.md, "Fewer coarsest sweeps on a coarser top").
 const LADDER_COARSEST_SWEEPS: usize = 20;
 
 /// Converges level `k` as the top, the way the top level converged (`method`: cycles, with
@@ -228,4 +225,33 @@ pub(super) fn output_errors(
         },
         solutions,
     )
+}
+
+/// The error estimate of a solve whose strategy cannot restrict its solution (the nested
+/// chain, [`super::chain`]; the composite grid, [`super::composite`]): the same strategy
+/// solved afresh at each level of `below` by `solve_at` (its values, `None` where it does not
+/// converge, which ends the estimate there: [`LadderStop::NotConverged`]), then `top`'s.
+pub(super) fn by_solving_again(
+    below: std::ops::Range<u32>,
+    top: LevelValues,
+    mut solve_at: impl FnMut(u32) -> Option<LevelValues>,
+) -> OutputErrors {
+    let clock = Instant::now();
+    let mut levels = Vec::new();
+    let mut stopped = None;
+    for level in below {
+        match solve_at(level) {
+            Some(values) => levels.push(values),
+            None => {
+                levels.clear();
+                stopped = Some(LadderStop::NotConverged { level });
+            }
+        }
+    }
+    levels.push(top);
+    OutputErrors {
+        levels,
+        seconds: clock.elapsed().as_secs_f64(),
+        stopped,
+    }
 }

@@ -39,6 +39,19 @@ pub fn level_to_resolve(problem: &Problem, level: u32, h_min: f64) -> u32 {
     level + halvings as u32
 }
 
+/// The error of a film that closed at `level` (its minimum film `h_min <= 0`) with no finer
+/// level left to the solve: the level estimated to resolve it, and the residuals so far.
+pub(super) fn film_collapse(problem: &Problem, level: u32, h_min: f64, tally: Tally) -> SolveError {
+    SolveError::FilmCollapse {
+        h_min,
+        level,
+        level_needed: Some(level_to_resolve(problem, level, h_min)),
+        finest_level: MAX_LEVEL,
+        cycle: tally.cycles,
+        residual_history: tally.history,
+    }
+}
+
 /// `observer` as a closure that hears every step, or none where there is no observer.
 pub(super) fn observing<'a>(
     mut observer: Option<&'a mut dyn FnMut(&Progress)>,
@@ -133,14 +146,7 @@ pub(super) fn solve(
         if params.accuracy.require_positive_film && film.h_min <= 0.0 {
             if !may_refine {
                 let level = level_number(mg.finest());
-                return Err(SolveError::FilmCollapse {
-                    h_min: film.h_min,
-                    level,
-                    level_needed: Some(level_to_resolve(problem, level, film.h_min)),
-                    finest_level: MAX_LEVEL,
-                    cycle: tally.cycles,
-                    residual_history: tally.history,
-                });
+                return Err(film_collapse(problem, level, film.h_min, tally));
             }
         } else {
             // The ladder converges its levels the way the top one finally converged.
