@@ -6,6 +6,8 @@
 //! levels, whose meshes halve together, so that the surroundings' own error is part of it
 //! (docs/ACCURACY_NOTES.md, "Resolution where the contact needs it").
 
+use super::converge::Tally;
+use super::covering::{self, Covering, Outputs};
 use super::ladder;
 use super::nested::Surround;
 pub use super::rectangles::{rectangles, snap, CORE, SHRINK};
@@ -13,7 +15,9 @@ use super::uniform::{self, observing};
 use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR};
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
-use crate::solver::output::{Friction, LevelValues, Method, OutputErrors, Progress, SolveError};
+use crate::solver::output::{
+    Film, Friction, LevelValues, Method, OutputErrors, Progress, SolveError,
+};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -157,8 +161,16 @@ pub(super) fn solve_point(
     // Newton-Krylov finish on the rectangle stalls), the case is solved on its one
     // case-sized domain, as without the chain, with that domain's own error estimate.
     let rects = rectangles(&params.domain);
-    let chain = match chain_from(problem, params, &rects, start, &mut observe) {
-        Ok(chain) => chain,
+    match chain_from(problem, params, &rects, start, &mut observe) {
+        Ok(chain) => {
+            let nested = Nested {
+                problem,
+                params,
+                chain,
+                clock,
+            };
+            covering::run(nested, problem, &params.accuracy, &mut observe)
+        }
         Err(_) => {
             let single = Params {
                 nested: false,
@@ -166,29 +178,70 @@ pub(super) fn solve_point(
             };
             let mut s = uniform::solve(problem, (&single, None), start, Some(&mut observe))?;
             s.info.seconds = clock.elapsed().as_secs_f64();
-            return Ok(s);
+            Ok(s)
         }
-    };
-    let errors = (params.accuracy.error_levels > 0)
-        .then(|| chain_errors(problem, params, &chain, params.accuracy.error_levels));
-    let friction = chain.friction(problem);
-    let mut solutions = chain.solutions;
-    let mut solution = solutions.pop().expect("a chain has its case-sized domain");
-    solution.friction = friction;
-    solution.errors = errors;
-    solution.info.seconds = clock.elapsed().as_secs_f64();
-    if solutions
-        .iter()
-        .any(|s| s.info.method == Method::NewtonKrylov)
-    {
-        solution.info.method = Method::NewtonKrylov;
     }
-    if !solutions.is_empty() {
-        let wide = solutions.swap_remove(0);
-        solution.info.start = wide.info.start;
-        solution.surroundings = Some(Box::new(wide));
+}
+
+/// A converged chain, for the loop of [`covering`].
+struct Nested<'a> {
+    problem: &'a Problem,
+    params: &'a Params,
+    chain: Chain,
+    clock: Instant,
+}
+
+impl Covering for Nested<'_> {
+    /// The innermost grid's (whose solve refused a closed film).
+    fn film(&self) -> Film {
+        self.chain.innermost().film
     }
-    Ok(solution)
+
+    fn level(&self) -> u32 {
+        self.params.level
+    }
+
+    /// The chain's friction and the estimate by the chains at the levels below.
+    fn outputs(&mut self, _: &mut dyn FnMut(&Progress)) -> Result<Outputs, SolveError> {
+        let levels = self.params.accuracy.error_levels;
+        let errors =
+            (levels > 0).then(|| chain_errors(self.problem, self.params, &self.chain, levels));
+        Ok(Outputs {
+            friction: self.chain.friction(self.problem),
+            tau: None,
+            errors,
+            coarser: Vec::new(),
+        })
+    }
+
+    fn into_tally(self) -> Tally {
+        let inner = self.chain.innermost();
+        Tally {
+            cycles: inner.info.cycles,
+            history: inner.info.residual_history.clone(),
+            ..Tally::default()
+        }
+    }
+
+    fn into_solution(self, _: Film, outputs: Outputs) -> PointSolution {
+        let mut solutions = self.chain.solutions;
+        let mut solution = solutions.pop().expect("a chain has its case-sized domain");
+        solution.friction = outputs.friction;
+        solution.errors = outputs.errors;
+        solution.info.seconds = self.clock.elapsed().as_secs_f64();
+        if solutions
+            .iter()
+            .any(|s| s.info.method == Method::NewtonKrylov)
+        {
+            solution.info.method = Method::NewtonKrylov;
+        }
+        if !solutions.is_empty() {
+            let wide = solutions.swap_remove(0);
+            solution.info.start = wide.info.start;
+            solution.surroundings = Some(Box::new(wide));
+        }
+        solution
+    }
 }
 
 /// The discretisation error of `chain` (at `params.level`): the chains at the `levels`

@@ -21,13 +21,14 @@
 
 use super::cold;
 use super::converge::{converge_level, How, Tally};
+use super::covering::{self, Covering, Outputs};
 use super::ladder;
-use super::level::{LevelFields, Model, LOAD};
+use super::level::{LevelFields, LOAD};
 use super::nested::Surround;
+use super::patch::carry_into;
 pub use super::patch::{Patch, PatchSpec};
 use super::stopping::{Known, OUTPUT_TOLERANCE};
-use super::transfer::coarsen;
-use super::uniform::{self, film_collapse, observing};
+use super::uniform::{self, observing};
 use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR, MAX_LEVEL, MIN_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
@@ -275,22 +276,56 @@ pub(super) fn solve_point(
         ..*spec
     }
     .rectangle(&params.domain, coarsest);
-    let at = |level: u32| PatchSpec {
-        x_start: rect.x_start,
-        cells_level: spec.cells_level + level - params.level,
-        ..*spec
-    };
-    let top = run(problem, params, &at(params.level), MAX_ROUNDS, &mut observe)?;
+    let rect_start = rect.x_start;
+    let top = run(
+        problem,
+        params,
+        &at(spec, params.level, rect_start, params.level),
+        MAX_ROUNDS,
+        &mut observe,
+    )?;
     if !top.settled {
         return Err(top.tally.not_converged(params));
     }
-    // A closed film is refused before the estimate is paid for.
-    let last = top.rounds.last().expect("a round");
-    if params.accuracy.require_positive_film && last.h_min <= 0.0 {
-        return Err(film_collapse(problem, params.level, last.h_min, top.tally));
+    let composite = Composite {
+        problem,
+        params,
+        spec,
+        below: coarsest..params.level,
+        rect_start,
+        top,
+        clock,
+    };
+    covering::run(composite, problem, &params.accuracy, &mut observe)
+}
+
+/// `spec` on the estimate's rectangle (its inlet at `x_start`) at `level`, for a composite
+/// whose own level is `top`: its patch one level coarser with each level below.
+fn at(spec: &PatchSpec, level: u32, x_start: f64, top: u32) -> PatchSpec {
+    PatchSpec {
+        x_start,
+        cells_level: spec.cells_level + level - top,
+        ..*spec
     }
-    let values = |r: &Run, level: u32| {
-        let last = r.rounds.last().expect("a round");
+}
+
+/// A composite solve whose rounds settled, for the loop of [`covering`].
+struct Composite<'a> {
+    problem: &'a Problem,
+    params: &'a Params,
+    spec: &'a PatchSpec,
+    /// The levels of its estimate.
+    below: std::ops::Range<u32>,
+    /// The inlet of the estimate's rectangle.
+    rect_start: f64,
+    top: Run,
+    clock: Instant,
+}
+
+impl Run {
+    /// The last round's values at `level`.
+    fn values(&self, level: u32) -> LevelValues {
+        let last = self.rounds.last().expect("a round");
         LevelValues {
             level,
             h_central: last.h_central,
@@ -298,52 +333,86 @@ pub(super) fn solve_point(
             mu_bar_sliding: last.friction.sliding,
             mu_bar_total: last.friction.total(),
         }
-    };
-    let errors = (levels > 0).then(|| {
-        let below = coarsest..params.level;
-        ladder::by_solving_again(below, values(&top, params.level), |level| {
-            let coarser = Params {
-                level,
-                ..params.clone()
-            };
-            match run(problem, &coarser, &at(level), MAX_ROUNDS, &mut observe) {
-                Ok(r) if r.settled => Some(values(&r, level)),
-                _ => None,
-            }
+    }
+
+    fn last(&self) -> &CompositeRound {
+        self.rounds.last().expect("a round")
+    }
+}
+
+impl Covering for Composite<'_> {
+    fn film(&self) -> Film {
+        let last = self.top.last();
+        Film {
+            h_central: last.h_central,
+            h_min: last.h_min,
+            hc_moes: last.hc_moes,
+            hmin_moes: last.hmin_moes,
+        }
+    }
+
+    fn level(&self) -> u32 {
+        self.params.level
+    }
+
+    /// The last round's friction, and the estimate by the composites at the levels below.
+    fn outputs(&mut self, observe: &mut dyn FnMut(&Progress)) -> Result<Outputs, SolveError> {
+        let (problem, params, spec, top_level) =
+            (self.problem, self.params, self.spec, self.params.level);
+        let errors = (!self.below.is_empty()).then(|| {
+            let top = self.top.values(top_level);
+            ladder::by_solving_again(self.below.clone(), top, |level| {
+                let coarser = Params {
+                    level,
+                    ..params.clone()
+                };
+                let patch = at(spec, level, self.rect_start, top_level);
+                match run(problem, &coarser, &patch, MAX_ROUNDS, observe) {
+                    Ok(r) if r.settled => Some(r.values(level)),
+                    _ => None,
+                }
+            })
+        });
+        Ok(Outputs {
+            friction: self.top.last().friction,
+            tau: None,
+            errors,
+            coarser: Vec::new(),
         })
-    });
-    let friction = last.friction;
-    let film = Film {
-        h_central: last.h_central,
-        h_min: last.h_min,
-        hc_moes: last.hc_moes,
-        hmin_moes: last.hmin_moes,
-    };
-    Ok(PointSolution {
-        grid: top.grid,
-        p: top.p,
-        h: top.h,
-        delta: top.delta,
-        film,
-        friction,
-        friction_region: params.friction.region,
-        info: Info {
-            level: params.level,
-            method: top.method,
-            cycles: top.tally.cycles,
-            newton_steps: top.tally.work.newton_steps,
-            krylov_iterations: top.tally.work.krylov_iterations,
-            residual_history: top.tally.history,
-            load_error: top.load_error,
-            seconds: clock.elapsed().as_secs_f64(),
-            start: StartKind::Cold,
-        },
-        errors,
-        coarser: Vec::new(),
-        surroundings: None,
-        tau: None,
-        patch: Some((top.patch.grid.domain(), top.patch.grid.hx)),
-    })
+    }
+
+    fn into_tally(self) -> Tally {
+        self.top.tally
+    }
+
+    fn into_solution(self, film: Film, outputs: Outputs) -> PointSolution {
+        let top = self.top;
+        PointSolution {
+            grid: top.grid,
+            p: top.p,
+            h: top.h,
+            delta: top.delta,
+            film,
+            friction: outputs.friction,
+            friction_region: self.params.friction.region,
+            info: Info {
+                level: self.params.level,
+                method: top.method,
+                cycles: top.tally.cycles,
+                newton_steps: top.tally.work.newton_steps,
+                krylov_iterations: top.tally.work.krylov_iterations,
+                residual_history: top.tally.history,
+                load_error: top.load_error,
+                seconds: self.clock.elapsed().as_secs_f64(),
+                start: StartKind::Cold,
+            },
+            errors: outputs.errors,
+            coarser: Vec::new(),
+            surroundings: None,
+            tau: None,
+            patch: Some((top.patch.grid.domain(), top.patch.grid.hx)),
+        }
+    }
 }
 
 /// Most rounds of a composite solve: case 150 settled in 3-9 (level 6: 7 of single cycles
@@ -401,46 +470,4 @@ fn round_outputs(
         residual: 0.0,
         seconds: 0.0,
     }
-}
-
-/// Carries the converged patch `fine` (film constant `delta`) into the whole-domain level
-/// `level`, its corner at node `[i0, j0]`: at the level's nodes at least `margin` cells inside
-/// the patch, the restricted pressure and the FAS forcing (`f`, and the film-equation offset
-/// that reproduces the patch's film; elsewhere the film's right-hand side is `geometry`); in
-/// the force balance, the patch's load less the level's own over the patch.
-fn carry_into(
-    level: &mut LevelFields,
-    (fine, delta): (&LevelFields, f64),
-    ([i0, j0], margin): ([usize; 2], usize),
-    (model, geometry): (&Model, &[f64]),
-) {
-    let mut sub = LevelFields::new(fine.grid.coarser(), model);
-    coarsen(fine, &mut sub, model, delta);
-    let (g, sg) = (level.grid, sub.grid);
-    let at = |ic: usize, jc: usize| g.idx(i0 + ic, j0 + jc);
-    let forced = || {
-        (margin..=sg.ny - margin)
-            .flat_map(move |jc| (margin..=sg.nx - margin).map(move |ic| (ic, jc)))
-    };
-    level.f.iter_mut().for_each(|v| *v = 0.0);
-    for (ic, jc) in forced() {
-        level.p[at(ic, jc)] = sub.p[sg.idx(ic, jc)];
-        level.f[at(ic, jc)] = sub.f[sg.idx(ic, jc)];
-    }
-    let mut w = g.zeros();
-    level.deformation.apply(&level.p, &mut w);
-    level.hrhs.copy_from_slice(geometry);
-    for (ic, jc) in forced() {
-        let k = at(ic, jc);
-        level.hrhs[k] = sub.h[sg.idx(ic, jc)] - delta - w[k];
-    }
-    let mut under = sg.zeros();
-    for jc in 0..=sg.ny {
-        for ic in 0..=sg.nx {
-            under[sg.idx(ic, jc)] = level.p[at(ic, jc)];
-        }
-    }
-    level.load_correction = fine.grid.integrate(&fine.p) - sg.integrate(&under);
-    level.rg = -(level.load - level.load_correction);
-    level.invalidate();
 }

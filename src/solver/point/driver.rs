@@ -1,10 +1,11 @@
-//! The driver: which strategy covers the contact, then its solve. A uniform grid
-//! ([`super::uniform`]) is the solver's own loop: converge the top level warm or cold, settle
-//! its edge, check the film, estimate the outputs' error by the ladder of coarser levels, and
-//! refine where the film closes or the estimate misses the target. The nested chain
-//! ([`super::chain`]) runs that loop on each of its domains, the case-sized one first, and
-//! estimates over whole chains at coarser levels; the composite grid ([`super::composite`])
-//! runs it on its patch inside rounds that couple the patch with the whole domain.
+//! The driver: which strategy covers the contact, then its solve, each through the one loop
+//! of [`super::covering`] (converge, check the film, read the outputs and their error, refine
+//! where they miss). A uniform grid ([`super::uniform`]) converges its top level warm or cold,
+//! settles its edge, estimates by the ladder of coarser levels and refines. The nested chain
+//! ([`super::chain`]) solves a uniform grid on each of its domains, the case-sized one first,
+//! and estimates over whole chains at coarser levels; the composite grid
+//! ([`super::composite`]) solves one on its patch inside rounds that couple the patch with the
+//! whole domain, and estimates over whole composites. Neither refines.
 
 use super::composite::PatchSpec;
 use super::{chain, composite, uniform, Params, PointSolution, Start};

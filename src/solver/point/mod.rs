@@ -16,6 +16,7 @@ pub mod chain;
 mod cold;
 pub mod composite;
 mod converge;
+mod covering;
 mod cycles;
 mod driver;
 mod edge;
@@ -44,6 +45,7 @@ mod warm;
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{Film, Friction, Info, OutputErrors, Progress, SolveError};
+pub use covering::level_to_resolve;
 pub use friction::{mean_shear_stress, FrictionRegion, LOADED_FILM_FACTOR};
 pub use ladder::CoarseSolution;
 /// The applied load in `P` and `X, Y` units, `2 pi / 3` (Eq. 7).
@@ -57,7 +59,6 @@ pub use params::{
 pub use refine::AccuracyTarget;
 use std::sync::Arc;
 pub use tau::TauExtrapolated;
-pub use uniform::level_to_resolve;
 pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change

@@ -1,5 +1,8 @@
-//! A composite grid's patch ([`super::composite`]): where it lies and how it is coupled.
+//! A composite grid's patch ([`super::composite`]): where it lies and how it is coupled
+//! (the converged patch carried into the whole-domain level, [`carry_into`]).
 
+use super::level::{LevelFields, Model};
+use super::transfer::coarsen;
 use crate::solver::grid::{Domain, Grid};
 
 /// The patches a user can ask for (`repro solve --patch`).
@@ -63,4 +66,46 @@ impl PatchSpec {
         };
         (patch, [i0, j0])
     }
+}
+
+/// Carries the converged patch `fine` (film constant `delta`) into the whole-domain level
+/// `level`, its corner at node `[i0, j0]`: at the level's nodes at least `margin` cells inside
+/// the patch, the restricted pressure and the FAS forcing (`f`, and the film-equation offset
+/// that reproduces the patch's film; elsewhere the film's right-hand side is `geometry`); in
+/// the force balance, the patch's load less the level's own over the patch.
+pub(super) fn carry_into(
+    level: &mut LevelFields,
+    (fine, delta): (&LevelFields, f64),
+    ([i0, j0], margin): ([usize; 2], usize),
+    (model, geometry): (&Model, &[f64]),
+) {
+    let mut sub = LevelFields::new(fine.grid.coarser(), model);
+    coarsen(fine, &mut sub, model, delta);
+    let (g, sg) = (level.grid, sub.grid);
+    let at = |ic: usize, jc: usize| g.idx(i0 + ic, j0 + jc);
+    let forced = || {
+        (margin..=sg.ny - margin)
+            .flat_map(move |jc| (margin..=sg.nx - margin).map(move |ic| (ic, jc)))
+    };
+    level.f.iter_mut().for_each(|v| *v = 0.0);
+    for (ic, jc) in forced() {
+        level.p[at(ic, jc)] = sub.p[sg.idx(ic, jc)];
+        level.f[at(ic, jc)] = sub.f[sg.idx(ic, jc)];
+    }
+    let mut w = g.zeros();
+    level.deformation.apply(&level.p, &mut w);
+    level.hrhs.copy_from_slice(geometry);
+    for (ic, jc) in forced() {
+        let k = at(ic, jc);
+        level.hrhs[k] = sub.h[sg.idx(ic, jc)] - delta - w[k];
+    }
+    let mut under = sg.zeros();
+    for jc in 0..=sg.ny {
+        for ic in 0..=sg.nx {
+            under[sg.idx(ic, jc)] = level.p[at(ic, jc)];
+        }
+    }
+    level.load_correction = fine.grid.integrate(&fine.p) - sg.integrate(&under);
+    level.rg = -(level.load - level.load_correction);
+    level.invalidate();
 }
