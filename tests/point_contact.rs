@@ -3,9 +3,7 @@
 
 use crate::support::appendix_problem;
 use repro::paper::table4::{self, Table4Case};
-use repro::physics::case::{
-    Case, CaseForm, DimensionlessCase, LubricantSpec, PhysicalCase, Physics, Problem,
-};
+use repro::physics::case::{Case, CaseForm, LubricantSpec, PhysicalCase, Physics, Problem};
 use repro::physics::film::hc_nijenbanning;
 use repro::physics::lubricant::LubricantTable;
 use repro::physics::rheology::Rheology;
@@ -19,21 +17,9 @@ pub(crate) fn problem(case: &Case) -> Problem {
 }
 
 pub(crate) fn dimensionless(m: f64, l: f64, s_bar: f64, rheology: Rheology) -> Case {
-    Case {
-        spec: CaseForm::Dimensionless(DimensionlessCase {
-            m,
-            l,
-            s_bar,
-            d: 1.0,
-            slip: 0.01,
-            eta0_pa_s: None,
-            ph_pa: None,
-        }),
-        physics: Physics {
-            rheology,
-            ..Physics::default()
-        },
-    }
+    let mut case = Case::circular(m, l, s_bar);
+    case.physics.rheology = rheology;
+    case
 }
 
 pub(crate) fn physical(

@@ -196,6 +196,25 @@ pub struct Case {
     pub physics: Physics,
 }
 
+impl Case {
+    /// The circular contact of the Moes groups `m`, `l` and `s_bar` at 1 % slip with the
+    /// default physics (Barus, incompressible, Eyring): the form of Figs. 1-3's cases.
+    pub fn circular(m: f64, l: f64, s_bar: f64) -> Case {
+        Case {
+            spec: CaseForm::Dimensionless(DimensionlessCase {
+                m,
+                l,
+                s_bar,
+                d: 1.0,
+                slip: 0.01,
+                eta0_pa_s: None,
+                ph_pa: None,
+            }),
+            physics: Physics::default(),
+        }
+    }
+}
+
 /// The physical `p_H` (Pa) and `eta0` (Pa s) of a case given in Moes groups, point or line
 /// contact: checked when given, required by the laws that need them (Roelands both,
 /// Dowson-Higginson `p_H`), NaN when no law asked for them.
@@ -337,6 +356,14 @@ pub struct Problem {
 }
 
 impl Problem {
+    /// The circular contact of the groups `m`, `l`, `s_bar` at 1 % slip with the default
+    /// physics: the unit tests' contact.
+    #[cfg(test)]
+    pub(crate) fn circular(m: f64, l: f64, s_bar: f64) -> Problem {
+        let case = Case::circular(m, l, s_bar);
+        Problem::from_case(&case, &LubricantTable::table1()).expect("a valid contact")
+    }
+
     /// Resolves a case against the lubricant table and checks every field.
     pub fn from_case(case: &Case, lubricants: &LubricantTable) -> Result<Self, CaseError> {
         match &case.spec {

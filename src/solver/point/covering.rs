@@ -4,8 +4,9 @@
 //! accuracy target ([`super::AccuracyParams`]), within the refinements it has left.
 //!
 //! A uniform grid ([`super::uniform`]) refines; the nested chain ([`super::chain`]) and the
-//! composite grid ([`super::composite`]) do not (their estimate solves the whole strategy
-//! again at coarser levels, and a finer one would cost four times their level).
+//! composite grid ([`super::composite`]) are solved at the level given (their estimate solves
+//! the whole strategy again at coarser levels, and an estimate that misses the target is
+//! reported with the solution).
 
 use super::converge::Tally;
 use super::tau::TauExtrapolated;
@@ -124,5 +125,223 @@ fn film_collapse(problem: &Problem, level: u32, h_min: f64, tally: Tally) -> Sol
         finest_level: MAX_LEVEL,
         cycle: tally.cycles,
         residual_history: tally.history,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::grid::{Domain, Grid};
+    use crate::solver::output::{Info, LevelValues, Method, StartKind};
+    use crate::solver::point::{AccuracyTarget, FrictionRegion};
+
+    /// A covering whose film and estimate are scripted by level: its film closed below
+    /// `closed_below`, its friction estimate missing 1 % below `missed_below` (levels converging
+    /// at 10 % a level) and within it from there (0.1 % a level); it may refine up to `last`.
+    struct Scripted {
+        level: u32,
+        last: u32,
+        closed_below: u32,
+        missed_below: u32,
+        reads_target: bool,
+        /// Each refinement: the level it left and whether outputs came with it.
+        refined: Vec<(u32, bool)>,
+    }
+
+    impl Scripted {
+        fn at(level: u32, last: u32) -> Self {
+            Scripted {
+                level,
+                last,
+                closed_below: 0,
+                missed_below: 0,
+                reads_target: true,
+                refined: Vec::new(),
+            }
+        }
+    }
+
+    impl Covering for Scripted {
+        fn film(&self) -> Film {
+            let h_min = if self.level < self.closed_below {
+                -1e-4
+            } else {
+                1e-3
+            };
+            Film {
+                h_central: 2e-3,
+                h_min,
+                hc_moes: 2.0,
+                hmin_moes: h_min * 1e3,
+            }
+        }
+
+        fn level(&self) -> u32 {
+            self.level
+        }
+
+        fn outputs(&mut self, _: &mut dyn FnMut(&Progress)) -> Result<Outputs, SolveError> {
+            let step = if self.level < self.missed_below {
+                1.0
+            } else {
+                0.01
+            };
+            let levels = (0..3)
+                .map(|i| {
+                    let mu = 10.0 - step * (2 - i) as f64 / (i + 1) as f64;
+                    LevelValues {
+                        level: self.level - 2 + i,
+                        h_central: 2e-3,
+                        h_min: 1e-3,
+                        mu_bar_sliding: mu,
+                        mu_bar_total: mu,
+                    }
+                })
+                .collect();
+            Ok(Outputs {
+                friction: Friction {
+                    sliding: 10.0,
+                    rolling: None,
+                },
+                tau: None,
+                errors: Some(OutputErrors::of(levels, 0.0)),
+                coarser: Vec::new(),
+            })
+        }
+
+        fn into_tally(self) -> Tally {
+            Tally {
+                cycles: 7,
+                history: vec![1e-3, 1e-5],
+                ..Tally::default()
+            }
+        }
+
+        fn into_solution(self, film: Film, outputs: Outputs) -> PointSolution {
+            let grid = Grid::level(&Domain::default(), 3);
+            PointSolution {
+                grid,
+                p: Vec::new(),
+                h: Vec::new(),
+                delta: 0.0,
+                film,
+                friction: outputs.friction,
+                friction_region: FrictionRegion::Domain,
+                info: Info {
+                    level: self.level,
+                    method: Method::Cycles,
+                    // The refinements, and those that came after outputs.
+                    cycles: self.refined.len(),
+                    newton_steps: self.refined.iter().filter(|(_, after)| *after).count(),
+                    krylov_iterations: 0,
+                    residual_history: Vec::new(),
+                    load_error: 0.0,
+                    seconds: 0.0,
+                    start: StartKind::Cold,
+                },
+                errors: outputs.errors,
+                coarser: Vec::new(),
+                surroundings: None,
+                patch: None,
+                tau: None,
+            }
+        }
+
+        fn may_refine(&self) -> bool {
+            self.level < self.last
+        }
+
+        fn reads_target(&self) -> bool {
+            self.reads_target
+        }
+
+        fn refine(
+            &mut self,
+            after: Option<Outputs>,
+            _: &mut dyn FnMut(&Progress),
+        ) -> Result<(), SolveError> {
+            self.refined.push((self.level, after.is_some()));
+            self.level += 1;
+            Ok(())
+        }
+    }
+
+    fn solve(covering: Scripted) -> Result<PointSolution, SolveError> {
+        let accuracy = AccuracyParams {
+            error_levels: 2,
+            target: Some(AccuracyTarget::FRICTION),
+            ..AccuracyParams::default()
+        };
+        run(
+            covering,
+            &Problem::circular(1000.0, 10.0, 0.1),
+            &accuracy,
+            &mut |_| {},
+        )
+    }
+
+    #[test]
+    fn a_closed_film_refines_without_outputs_and_fails_where_no_level_is_left() {
+        let closed = Scripted {
+            closed_below: 8,
+            ..Scripted::at(7, 8)
+        };
+        let s = solve(closed).unwrap();
+        assert_eq!(s.info.level, 8);
+        assert_eq!(
+            (s.info.cycles, s.info.newton_steps),
+            (1, 0),
+            "one refinement, before any outputs were read"
+        );
+        let still_closed = Scripted {
+            closed_below: 9,
+            ..Scripted::at(7, 8)
+        };
+        match solve(still_closed) {
+            Err(SolveError::FilmCollapse {
+                level,
+                level_needed,
+                cycle,
+                residual_history,
+                ..
+            }) => {
+                assert_eq!(level, 8);
+                assert!(level_needed.is_some_and(|l| l > 8));
+                assert_eq!((cycle, residual_history.len()), (7, 2), "the tally's");
+            }
+            other => panic!("expected a closed film's error, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn a_missed_target_refines_where_it_is_read_and_a_level_is_left() {
+        let missed = Scripted {
+            missed_below: 8,
+            ..Scripted::at(7, 8)
+        };
+        let s = solve(missed).unwrap();
+        assert_eq!(s.info.level, 8, "refined once, the target met there");
+        assert_eq!(
+            (s.info.cycles, s.info.newton_steps),
+            (1, 1),
+            "after its outputs"
+        );
+        let met = solve(Scripted::at(7, 8)).unwrap();
+        assert_eq!(met.info.level, 7, "met at once: no refinement");
+        let unread = Scripted {
+            missed_below: 8,
+            reads_target: false,
+            ..Scripted::at(7, 8)
+        };
+        assert_eq!(solve(unread).unwrap().info.level, 7);
+        let exhausted = Scripted {
+            missed_below: 9,
+            ..Scripted::at(7, 8)
+        };
+        let s = solve(exhausted).unwrap();
+        assert_eq!(
+            s.info.level, 8,
+            "missed again at the last level: its outputs"
+        );
     }
 }

@@ -290,26 +290,13 @@ impl Surround {
 #[cfg(test)]
 mod tests {
     use super::{bicubic, cubic_weights, Surround, LOAD};
-    use crate::physics::case::{Case, CaseForm, DimensionlessCase, Physics, Problem};
+    use crate::physics::case::Problem;
     use crate::physics::hertz::Hertz;
-    use crate::physics::lubricant::LubricantTable;
     use crate::solver::deformation::Deformation;
     use crate::solver::grid::{Domain, Grid};
 
     fn problem() -> Problem {
-        let case = Case {
-            spec: CaseForm::Dimensionless(DimensionlessCase {
-                m: 20.0,
-                l: 10.0,
-                s_bar: 0.1,
-                d: 1.0,
-                slip: 0.01,
-                eta0_pa_s: None,
-                ph_pa: None,
-            }),
-            physics: Physics::default(),
-        };
-        Problem::from_case(&case, &LubricantTable::table1()).unwrap()
+        Problem::circular(20.0, 10.0, 0.1)
     }
 
     /// The Hertzian pressure and an inlet bump that reaches the nested rectangle's edge.

@@ -1,8 +1,7 @@
 use super::lagged::Preconditioner;
 use super::*;
-use crate::physics::case::{Case, CaseForm, DimensionlessCase, Physics, Problem};
+use crate::physics::case::Problem;
 use crate::physics::hertz::Hertz;
-use crate::physics::lubricant::LubricantTable;
 use crate::solver::dense;
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::point::HalfPointMean;
@@ -15,19 +14,7 @@ fn setup() -> (LevelFields, Model, f64) {
 
 /// [`setup`] with the half-point mean `mean`.
 fn setup_with(mean: HalfPointMean) -> (LevelFields, Model, f64) {
-    let case = Case {
-        spec: CaseForm::Dimensionless(DimensionlessCase {
-            m: 100.0,
-            l: 10.0,
-            s_bar: 0.5,
-            d: 1.0,
-            slip: 0.01,
-            eta0_pa_s: None,
-            ph_pa: None,
-        }),
-        physics: Physics::default(),
-    };
-    let problem = Problem::from_case(&case, &LubricantTable::table1()).unwrap();
+    let problem = Problem::circular(100.0, 10.0, 0.5);
     let model = Model::new(&problem).with_half_point(mean);
     let grid = Grid::level(&Domain::default(), 4);
     let mut level = LevelFields::new(grid, &model);
