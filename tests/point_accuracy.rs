@@ -1,12 +1,10 @@
 //! The point-contact solver's accuracy machinery against its oracles: the refinement of a
 //! closed film and of a missed accuracy target, the stopping rule's bound on the algebraic
-//! error, the error estimate against level 9, the fitted far field against the a-priori one,
-//! and the chain of nested domains.
+//! error, the fitted far field against the a-priori one, and the chain of nested domains
+//! (the error estimate against level 9: `error_bracket.rs`).
 
 use crate::point_contact::{assert_sound, dimensionless, physical, problem, rel};
 use crate::support::appendix_problem;
-use repro::paper::table4::Table4Case;
-use repro::physics::case::Case;
 use repro::physics::rheology::Rheology;
 use repro::solver::output::{LadderStop, Method, Output, SolveError};
 use repro::solver::point::{solve, solve_from, AccuracyTarget, Params, PointSolution, Start};
@@ -267,87 +265,6 @@ fn the_loaded_film_region_leaves_a_heavy_contact_unchanged() {
     );
 }
 
-/// The discretisation error a level-7 solve reports (from its own level and the two below,
-/// src/solver/richardson.rs) against the same case solved at level 9: for the central film,
-/// the minimum film and the sliding friction, the estimate must be at least the distance to
-/// level 9. Level 9 is itself not converged, so the distance understates the true error by
-/// the level-9 error (a quarter to a half of the level-7 one at orders 2 to 1): bracketing it
-/// is what an error bar must do at the least. A case on a chain of nested domains
-/// (`Params::nested`) is held against its chain at level 8, whose contact mesh (2.6 / 512)
-/// is four times finer than a uniform level 9's on its domain. Returns the level-7 solve.
-fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
-    let p = problem(case);
-    let s = solve(&p, &Params::for_problem(&p, 7), None).unwrap_or_else(|e| panic!("{what}: {e}"));
-    let fine_level = if Params::for_problem(&p, 7).nested {
-        8
-    } else {
-        9
-    };
-    let fine_params = {
-        let mut params = Params::for_problem(&p, fine_level);
-        params.accuracy.error_levels = 0;
-        params
-    };
-    let fine = solve(&p, &fine_params, None).unwrap_or_else(|e| panic!("{what} L9: {e}"));
-    let e = s
-        .errors
-        .as_ref()
-        .expect("a case is solved with its error estimate");
-    assert!(
-        e.levels.len() >= 2,
-        "{what}: at least two levels, {:?}",
-        e.levels
-    );
-    let outputs = [
-        (
-            "Hc",
-            Output::HCentral,
-            s.film.h_central,
-            fine.film.h_central,
-        ),
-        ("Hmin", Output::HMin, s.film.h_min, fine.film.h_min),
-        (
-            "mu-bar",
-            Output::MuBarSliding,
-            s.friction.sliding,
-            fine.friction.sliding,
-        ),
-    ];
-    for (name, output, value, level_9) in outputs {
-        let estimate = e
-            .estimate(output)
-            .unwrap_or_else(|| panic!("{what}: no estimate of {name}"));
-        // The outputs are converged to the stopping rule's output tolerance (5e-4 relative,
-        // `StoppingParams::output_tolerance`), so a difference below it is algebraic, not a grid
-        // error: case 23's chain puts its central film 5.3e-4 from its level 8 with an
-        // estimate of 2.3e-4 (order 2.5 over levels 5-7).
-        let algebraic = Params::default().stopping.output_tolerance * value.abs();
-        let distance = (value - level_9).abs();
-        assert!(
-            estimate.error + algebraic >= distance,
-            "{what} {name}: level {} {value} +- {} (order {:?}), level 9 {level_9}",
-            s.info.level,
-            estimate.error,
-            estimate.order
-        );
-    }
-    s
-}
-
-#[test]
-fn the_error_estimate_brackets_level_9_on_a_light_contact() {
-    // Fig. 6 case 23 (5P4E, 40 C, 1 GPa, 12 m/s; M 4.76, L 57) on its wide domain with the
-    // far field and two nested rectangles: friction within half a per cent at level 7.
-    let c = physical("5p4e", 40.0, 1e9, 12.0, 0.005, 6e6, 1.0);
-    let s = assert_estimate_brackets_level_9(&c, "Fig. 6 case 23");
-    assert!(s.surroundings.is_some(), "solved on nested domains");
-    // Three levels, and an order observed for each output (2.50, 1.50, 1.47).
-    let e = s.errors.unwrap();
-    assert_eq!(e.levels.len(), 3);
-    let trusted = |o| e.estimate(o).unwrap().trusted();
-    assert!(trusted(Output::MuBarSliding) && trusted(Output::HCentral));
-}
-
 #[test]
 fn a_light_member_at_small_slip_converges_on_its_nested_domains() {
     // Fig. 6 case 19 (case 23 at S 0.1 %, tau0 4 MPa): with the core's outlet edge at X = 1.0,
@@ -408,31 +325,6 @@ fn a_members_ladder_stops_where_its_bases_found_a_level_outside_the_range() {
     for o in [Output::HCentral, Output::HMin, Output::MuBarSliding] {
         assert_eq!(e.estimate(o), own_e.estimate(o), "{o:?}");
     }
-}
-
-#[test]
-fn the_error_estimate_brackets_level_9_on_the_table_4_case() {
-    // The Appendix case (M 1 739, L 14.8): the middle of the envelope.
-    let c = Table4Case::shipped().unwrap().case;
-    let s = assert_estimate_brackets_level_9(&c, "Table 4");
-    // Its level 5's central film is a fifth of level 7's (the paper's own level-5 film is six
-    // times too thin): outside the asymptotic range, levels 6-7 are read.
-    let e = s.errors.unwrap();
-    assert_eq!(e.levels.len(), 2);
-    assert_eq!(e.stopped, Some(LadderStop::FilmUnresolved { level: 5 }));
-}
-
-#[test]
-fn the_error_estimate_brackets_level_9_on_a_heavy_contact() {
-    // Fig. 4 case 140 (mineral oil A, 60 C, 3 GPa, 2 m/s; M 11 070): its film closes at
-    // level 7, so it is solved at level 8; its level 6 closes at the centre, so the estimate
-    // reads levels 7-8 alone and is the first-order bound.
-    let c = physical("mineral-oil-a", 60.0, 3e9, 2.0, 0.005, 6e6, 1.0);
-    let s = assert_estimate_brackets_level_9(&c, "M 11 070");
-    assert_eq!(s.info.level, 8);
-    let e = s.errors.unwrap();
-    assert_eq!(e.stopped, Some(LadderStop::FilmClosed { level: 6 }));
-    assert!(!e.estimate(Output::MuBarSliding).unwrap().trusted());
 }
 
 /// The far field with its amplitude refitted to the solution (`Edge::FittedFarField`, the
