@@ -37,16 +37,5 @@ pub fn case_of(name: &str) -> Case {
         .skip(1)
         .map(|s| s.parse().unwrap())
         .collect();
-    Case {
-        spec: CaseForm::Dimensionless(DimensionlessCase {
-            m: v[0],
-            l: v[1],
-            s_bar: v[2],
-            d: 1.0,
-            slip: 0.01,
-            eta0_pa_s: None,
-            ph_pa: None,
-        }),
-        physics: Physics::default(),
-    }
+    Case::circular(v[0], v[1], v[2])
 }

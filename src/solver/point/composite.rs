@@ -325,7 +325,7 @@ struct Composite<'a> {
 impl Run {
     /// The last round's values at `level`.
     fn values(&self, level: u32) -> LevelValues {
-        let last = self.rounds.last().expect("a round");
+        let last = self.last();
         LevelValues {
             level,
             h_central: last.h_central,
