@@ -53,7 +53,7 @@ const NEW_COLUMNS_SHARE: f64 = 0.02;
 /// steps of a level): the numeric factor and work buffers (faer allocates its own afresh for
 /// every factorisation and every solve; at level 7 the kernel's page faults on that fresh
 /// memory were a fifth of a Newton-Krylov solve) and the column order by label.
-#[derive(Default)]
+#[derive(Default, Clone)]
 pub(crate) struct LuStorage {
     /// The last numeric factor, refilled by the next factorisation whatever its order
     /// (faer's supernodal factor; its simplicial one, which faer's own driver chooses for
@@ -158,6 +158,7 @@ fn symbolic(
 }
 
 /// The factorised bordered matrix.
+#[derive(Clone)]
 pub(crate) struct BorderedLu {
     numeric: SupernodalLu<usize, Factor>,
     /// Column order (forward, inverse).

@@ -124,6 +124,7 @@ fn chain_from(
             coarser: Vec::new(),
             outside: None,
             residual: outer.info.residual(),
+            factor: None,
         };
         let nested = uniform::solve(
             problem,

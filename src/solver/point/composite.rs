@@ -186,6 +186,7 @@ fn run(
             coarser: Vec::new(),
             outside: None,
             residual: params.stopping.tolerance,
+            factor: None,
         };
         let sol = uniform::solve(
             problem,
@@ -411,6 +412,7 @@ impl Covering for Composite<'_> {
             surroundings: None,
             tau: None,
             patch: Some((top.patch.grid.domain(), top.patch.grid.hx)),
+            factor: None,
         }
     }
 }

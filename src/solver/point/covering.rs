@@ -244,6 +244,7 @@ mod tests {
                 surroundings: None,
                 patch: None,
                 tau: None,
+                factor: None,
             }
         }
 

@@ -32,6 +32,7 @@ pub(super) fn finish(
         outcome = newton::NewtonKrylovRun {
             converged: next.converged,
             iterations: outcome.iterations + next.iterations,
+            factorisations: outcome.factorisations + next.factorisations,
             krylov_iterations: outcome.krylov_iterations + next.krylov_iterations,
         };
         let now = edge_outputs(mg, k, params);
@@ -53,20 +54,22 @@ fn newton_solve(
 ) -> newton::NewtonKrylovRun {
     let model = mg.model;
     let mut delta = mg.delta;
+    let handed = mg.take_factor(k);
     let level = &mut mg.levels[k];
+    let number = level_number(level);
     let mut before = level.p.clone();
     let mut steps = 0;
-    let outcome = newton::iterate(
+    let (outcome, factor) = newton::iterate(
         level,
         &model,
         &mut delta,
-        &params.newton,
-        &params.stopping,
+        (&params.newton, &params.stopping),
         if mg.warm {
-            newton::warm_first_forcing(level_number(level))
+            newton::warm_first_forcing(number)
         } else {
             newton::FIRST_FORCING
         },
+        handed,
         &mut |level: &level::LevelFields, step: &newton::NewtonStep| {
             steps += 1;
             history.push(step.residual);
@@ -86,5 +89,8 @@ fn newton_solve(
         },
     );
     mg.delta = delta;
+    if number >= newton::HANDED_LEVEL {
+        mg.keep_factor(k, factor);
+    }
     outcome
 }

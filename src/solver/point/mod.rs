@@ -52,6 +52,7 @@ pub use ladder::CoarseSolution;
 pub(crate) use level::LOAD;
 pub use model::HalfPointMean;
 use nested::Surround;
+pub use newton::HandedFactor;
 pub use params::{
     AccuracyParams, Edge, FrictionParams, KrylovParams, MultigridParams, NewtonParams, Params,
     StoppingParams,
@@ -64,7 +65,7 @@ pub use warm::Start;
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
 /// can move a result (the revision guard, tests/revision.rs, fails when a result moves and it
 /// is not).
-pub const SOLVER_REVISION: &str = "point-31";
+pub const SOLVER_REVISION: &str = "point-32";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -102,6 +103,9 @@ pub struct PointSolution {
     pub patch: Option<(Domain, f64)>,
     /// The final level's outputs tau-extrapolated ([`AccuracyParams::tau_extrapolation`]).
     pub tau: Option<TauExtrapolated>,
+    /// The final level's last Newton-Krylov factor, from level 8 up: a related case started
+    /// from this solution preconditions its first step with it.
+    pub factor: Option<HandedFactor>,
 }
 
 /// Solves `problem` with `params` from the Hertzian pressure (full multigrid); `observer` (if

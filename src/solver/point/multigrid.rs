@@ -4,6 +4,7 @@
 use super::far_field::FarField;
 use super::level::{LevelFields, Model, LOAD};
 use super::nested::Surround;
+use super::newton::KeptFactor;
 use super::relax::{relax, LineScratch};
 use super::transfer::{coarsen, correct, interpolate_solution, scale_tau};
 use super::{Edge, Params};
@@ -32,6 +33,10 @@ pub(crate) struct Hierarchy {
     last_defect: f64,
     scratch: LineScratch,
     params: Params,
+    /// The last converged Newton-Krylov factor of a level and that level's index: the next
+    /// finish on the level (its edge round), or a member started from this solution, starts
+    /// from it ([`super::newton::HANDED_ITERATIONS`]).
+    factor: Option<(usize, KeptFactor)>,
 }
 
 impl Hierarchy {
@@ -74,7 +79,25 @@ impl Hierarchy {
             last_defect: 0.0,
             scratch: LineScratch::new(),
             params: params.clone(),
+            factor: None,
         }
+    }
+
+    /// The kept Newton-Krylov factor of level `k`, where there is one (taken: the finish
+    /// that uses it keeps its own last one).
+    pub fn take_factor(&mut self, k: usize) -> Option<KeptFactor> {
+        match self.factor.take() {
+            Some((level, factor)) if level == k => Some(factor),
+            other => {
+                self.factor = other;
+                None
+            }
+        }
+    }
+
+    /// Keeps `factor` (a converged finish's last, or none) as level `k`'s.
+    pub fn keep_factor(&mut self, k: usize, factor: Option<KeptFactor>) {
+        self.factor = factor.map(|f| (k, f));
     }
 
     /// Adds a level twice as fine as the finest on `domain` and returns its index.

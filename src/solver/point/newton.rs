@@ -25,8 +25,10 @@ use super::jacobian::{wedge_weights, Jacobian};
 use super::level::{LevelFields, Model, LOAD};
 use super::params::{NewtonParams, StoppingParams};
 use crate::solver::bordered_lu::LuStorage;
+use crate::solver::gmres::KrylovParams;
 use crate::solver::{gmres, line_search};
-use lagged::{KeptFactor, Preconditioner};
+pub(crate) use lagged::KeptFactor;
+use lagged::Preconditioner;
 
 /// `|dL/dP|` at every interior node: the Poiseuille stencil and the wedge term's own kernel
 /// coefficient. Dividing the residual by it makes a pressure.
@@ -72,12 +74,38 @@ fn evaluate(level: &mut LevelFields, model: &Model, delta: f64, scale: &[f64]) -
     }
 }
 
+/// A converged level's last factor, handed on with its solution to the solves that start
+/// from it ([`HANDED_ITERATIONS`]): shared by them, each preconditioning with its own copy.
+#[derive(Clone, Debug)]
+pub struct HandedFactor(std::sync::Arc<KeptFactor>);
+
+impl HandedFactor {
+    pub(crate) fn new(factor: KeptFactor) -> Self {
+        HandedFactor(std::sync::Arc::new(factor))
+    }
+
+    /// A copy to precondition with.
+    pub(crate) fn copy(&self) -> KeptFactor {
+        (*self.0).clone()
+    }
+}
+
+/// The same factor: a start is equal to another only with the very one.
+impl PartialEq for HandedFactor {
+    fn eq(&self, other: &Self) -> bool {
+        std::sync::Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
 /// Outcome of [`iterate`].
 pub(crate) struct NewtonKrylovRun {
     /// Whether the tolerances were met.
     pub converged: bool,
     /// Newton steps taken.
     pub iterations: usize,
+    /// New preconditioner factors made (the rest of the steps kept, mapped or were handed
+    /// one).
+    pub factorisations: usize,
     /// GMRES iterations (Jacobian-vector products) over all steps.
     pub krylov_iterations: usize,
 }
@@ -124,16 +152,19 @@ fn fresh(
 /// Newton steps on `level` (its own equations: the top of the hierarchy) from its current
 /// pressure and `delta` until both tolerances of `stopping` are met, within `newton`'s steps;
 /// the first step's forcing term is `first_forcing` ([`FIRST_FORCING`], or
-/// [`warm_first_forcing`] from a warm start). `report` hears of every step.
+/// [`warm_first_forcing`] from a warm start). `handed`, a factor made on this grid by an
+/// earlier solve near this state ([`HANDED_ITERATIONS`]), preconditions the first step
+/// where it still does. `report` hears of every step. Returns the outcome and, where it
+/// converged, the last step's factor.
 pub(crate) fn iterate(
     level: &mut LevelFields,
     model: &Model,
     delta: &mut f64,
-    newton: &NewtonParams,
-    stopping: &StoppingParams,
+    (newton, stopping): (&NewtonParams, &StoppingParams),
     first_forcing: f64,
+    handed: Option<KeptFactor>,
     report: &mut dyn FnMut(&LevelFields, &NewtonStep),
-) -> NewtonKrylovRun {
+) -> (NewtonKrylovRun, Option<KeptFactor>) {
     let g = level.grid;
     // The row scales are those of this state: a level just interpolated (the next level of
     // a grid sequence, a refined level) holds the coefficients of its last relaxation, or
@@ -148,10 +179,11 @@ pub(crate) fn iterate(
     // The factorisation's arrays, kept from one step to the next; and the last step's
     // factor itself, with the unknowns it was made for ([`lagged`], [`LAG_ITERATIONS`]).
     let mut storage = LuStorage::default();
-    let mut kept: Option<KeptFactor> = None;
+    let mut kept: Option<KeptFactor> = handed;
     let mut outcome = NewtonKrylovRun {
         converged: false,
         iterations: 0,
+        factorisations: 0,
         krylov_iterations: 0,
     };
     for it in 1..=newton.steps {
@@ -173,7 +205,8 @@ pub(crate) fn iterate(
         let mut jac = Jacobian::new(level, model, active, cavitating, scale.clone());
         // The last step's factor where the unknowns are its own, or, in the quadratic regime
         // ([`REMAP_FORCING`]), have moved at a few nodes; else a new one.
-        let moved = eta <= REMAP_FORCING;
+        let is_handed = it == 1 && kept.is_some();
+        let moved = eta <= REMAP_FORCING || is_handed;
         let lagged = match kept
             .take()
             .map(|k| k.remap(&jac.active, &jac.cavitating, moved))
@@ -188,34 +221,47 @@ pub(crate) fn iterate(
         let is_lagged = lagged.is_some();
         let mut preconditioner = match lagged {
             Some(p) => p,
-            None => match fresh(&jac, level, newton, std::mem::take(&mut storage)) {
-                Some(p) => p,
-                None => return outcome,
-            },
+            None => {
+                outcome.factorisations += 1;
+                match fresh(&jac, level, newton, std::mem::take(&mut storage)) {
+                    Some(p) => p,
+                    None => return (outcome, None),
+                }
+            }
         };
         let n = jac.len();
         let mut rhs: Vec<f64> = jac.active.iter().map(|&k| -ev.phi[k]).collect();
         rhs.push(-ev.load);
         let mut step = vec![0.0; n];
+        // A handed factor's system is given the iterations it may take in place of a new
+        // factor; a lagged one is judged by its count after the solve.
+        let krylov_params = match is_lagged && is_handed {
+            true => KrylovParams {
+                max_iterations: newton.krylov.max_iterations.min(HANDED_ITERATIONS),
+                ..newton.krylov
+            },
+            false => newton.krylov,
+        };
         let mut krylov = gmres::solve(
             &rhs,
             &mut step,
-            &newton.krylov,
+            &krylov_params,
             eta,
             |v, out| jac.apply(level, v, out),
             |v, out| preconditioner.solve(v, out),
         );
         if is_lagged
-            && (krylov.iterations > LAG_ITERATIONS
+            && ((krylov.iterations > LAG_ITERATIONS && !is_handed)
                 || krylov.relative_residual.is_nan()
                 || krylov.relative_residual > eta)
         {
             // The lagged factor no longer preconditions this Jacobian: a new one, and the
             // system solved again.
             outcome.krylov_iterations += krylov.iterations;
+            outcome.factorisations += 1;
             preconditioner = match fresh(&jac, level, newton, preconditioner.into_storage()) {
                 Some(p) => p,
-                None => return outcome,
+                None => return (outcome, None),
             };
             krylov = gmres::solve(
                 &rhs,
@@ -229,7 +275,7 @@ pub(crate) fn iterate(
         outcome.iterations = it;
         outcome.krylov_iterations += krylov.iterations;
         if !step.iter().all(|v| v.is_finite()) {
-            return outcome;
+            return (outcome, None);
         }
         // Backtracking on |phi|: halve the step until it decreases (or the smallest damping).
         let p_old = level.p.clone();
@@ -267,11 +313,11 @@ pub(crate) fn iterate(
             },
         );
         if !residual.is_finite() {
-            return outcome;
+            return (outcome, None);
         }
         if residual < stopping.tolerance && load_error < stopping.load_tolerance {
             outcome.converged = true;
-            return outcome;
+            return (outcome, kept);
         }
         // Steps the line search can only take at its smallest damping make no progress
         // (each moves the state by 1/256 of a step that does not reduce `min(P, r / c)`):
@@ -285,11 +331,26 @@ pub(crate) fn iterate(
             0
         };
         if stalled >= STALLED_STEPS {
-            return outcome;
+            return (outcome, None);
         }
     }
-    outcome
+    (outcome, None)
 }
+
+/// Most GMRES iterations of a first step preconditioned by a handed factor (one made by an
+/// earlier solve on the grid: the base of a family for its member, or the level's last
+/// finish for its edge round), past which a new factor is made and the system solved again.
+/// A fresh factor takes about 56 iterations on the M = 19 205 members at level 8 (forcing
+/// 1e-4), and its factorisation costs what about 35-45 iterations do there; the base's
+/// factor took 77-80, so it is worth keeping up to about 100 (docs/ACCURACY_NOTES.md,
+/// "The base's factor at level 8").
+pub(crate) const HANDED_ITERATIONS: usize = 100;
+
+/// The level from which a converged finish hands its factor on: at level 8 a member's step
+/// is one factorisation and about 56 GMRES iterations, and the base's factor saves the
+/// factorisation (the M = 19 205 family: 0.88 of its CPU time); at level 7 it cost more
+/// iterations than it saved (the 5P4E family at 40 C, 2 GPa, 7 m/s: 1.31 times the time).
+pub(crate) const HANDED_LEVEL: u32 = 8;
 
 /// Consecutive steps at the smallest damping after which [`iterate`] gives up.
 const STALLED_STEPS: usize = 3;

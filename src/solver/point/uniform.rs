@@ -20,6 +20,7 @@ use super::edge::settle_top;
 use super::level::LOAD;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
+use super::newton::HandedFactor;
 use super::{
     cold, friction, ladder, refine, tau, warm, CoarseSolution, Params, PointSolution, Start,
     MAX_LEVEL, MIN_LEVEL,
@@ -239,7 +240,9 @@ impl Covering for Uniform<'_> {
         self.tally
     }
 
-    fn into_solution(self, film: Film, outputs: Outputs) -> PointSolution {
+    fn into_solution(mut self, film: Film, outputs: Outputs) -> PointSolution {
+        let top = self.mg.levels.len() - 1;
+        let factor = self.mg.take_factor(top).map(HandedFactor::new);
         let method = if self.newton_used {
             Method::NewtonKrylov
         } else {
@@ -270,6 +273,7 @@ impl Covering for Uniform<'_> {
             surroundings: None,
             patch: None,
             tau: outputs.tau,
+            factor,
         }
     }
 }

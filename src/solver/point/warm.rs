@@ -51,6 +51,9 @@ pub struct Start {
     pub outside: Option<LadderStop>,
     /// Its last residual.
     pub residual: f64,
+    /// Its final level's last Newton-Krylov factor, where it hands one on
+    /// ([`super::PointSolution::factor`]).
+    pub factor: Option<super::HandedFactor>,
 }
 
 impl Start {
@@ -70,6 +73,7 @@ impl Start {
                 .as_ref()
                 .and_then(|e| e.stopped)
                 .filter(|stop| stop.is_outside()),
+            factor: s.factor.clone(),
         }
     }
 
@@ -109,6 +113,9 @@ pub(super) fn converge(
     let mut mg = Hierarchy::for_problem(problem, params, surround, start.delta);
     mg.warm = true;
     let top = mg.levels.len() - 1;
+    // The start's factor (its grid is the top level's: `Start::fits`) preconditions the
+    // first Newton step where one is taken.
+    mg.keep_factor(top, start.factor.as_ref().map(|f| f.copy()));
     // The pressure first, then the edge: the far field is put on the boundary for the
     // start's `Delta`.
     mg.levels[top].p.copy_from_slice(&start.p);

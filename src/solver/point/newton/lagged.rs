@@ -21,12 +21,19 @@ use crate::solver::bordered_lu::{BorderedLu, LuStorage};
 const CHANGED_SHARE: f64 = 0.01;
 
 /// A factor and the unknowns it was made for.
-pub(super) struct KeptFactor {
+#[derive(Clone)]
+pub(crate) struct KeptFactor {
     lu: BorderedLu,
     /// Its unknowns' nodes, in its order.
     active: Vec<usize>,
     /// Per unknown: whether its row is the identity.
     cavitating: Vec<bool>,
+}
+
+impl std::fmt::Debug for KeptFactor {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "KeptFactor({} unknowns)", self.active.len())
+    }
 }
 
 /// A factor as the preconditioner of one system: its own, or a kept one mapped onto it.
@@ -48,7 +55,7 @@ struct Map {
 
 impl KeptFactor {
     /// The storage of its factorisation, for a new one.
-    pub fn into_storage(self) -> LuStorage {
+    pub(super) fn into_storage(self) -> LuStorage {
         self.lu.into_storage()
     }
 
@@ -56,7 +63,7 @@ impl KeptFactor {
     /// identity rows): as it is where they are its own; mapped where `moved` allows it and
     /// at most [`CHANGED_SHARE`] of the unknowns differ; else its storage back (boxed: it
     /// holds the factor's buffers by value).
-    pub fn remap(
+    pub(super) fn remap(
         self,
         active: &[usize],
         cavitating: &[bool],
@@ -139,7 +146,7 @@ impl Preconditioner {
     }
 
     /// The storage of its factorisation, for a new one.
-    pub fn into_storage(self) -> LuStorage {
+    pub(super) fn into_storage(self) -> LuStorage {
         self.factor.into_storage()
     }
 }

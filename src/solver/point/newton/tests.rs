@@ -188,18 +188,18 @@ fn a_step_does_not_depend_on_the_coefficients_left_on_the_level() {
         &mut stale,
         &model,
         &mut a,
-        &newton,
-        &stopping,
+        (&newton, &stopping),
         FIRST_FORCING,
+        None,
         &mut |_, _| {},
     );
     iterate(
         &mut current,
         &model,
         &mut b,
-        &newton,
-        &stopping,
+        (&newton, &stopping),
         FIRST_FORCING,
+        None,
         &mut |_, _| {},
     );
     assert_eq!((stale.p, a), (current.p, b));
@@ -314,4 +314,61 @@ fn a_factor_mapped_onto_moved_unknowns_preconditions_their_system() {
     // The unmapped factor takes at most 30 iterations to 1e-11 here; one unknown passed
     // through by the identity costs a few more, never the hundreds of no preconditioner.
     assert!(out.iterations <= 40, "{out:?}");
+}
+
+#[test]
+fn a_handed_factor_preconditions_a_related_solve_to_the_same_solution() {
+    // The test contact converged, its last factor kept; a related contact (S-bar 0.6 instead
+    // of 0.5: other Eyring conductances, as a family's member has) solved from that solution
+    // with the factor handed in and without, as a warm member's finish is.
+    let (mut level, model, mut delta) = setup();
+    let newton = NewtonParams::default();
+    let stopping = StoppingParams {
+        tolerance: 1e-10,
+        load_tolerance: 1e-10,
+        ..StoppingParams::default()
+    };
+    let (run, factor) = iterate(
+        &mut level,
+        &model,
+        &mut delta,
+        (&newton, &stopping),
+        FIRST_FORCING,
+        None,
+        &mut |_, _| {},
+    );
+    assert!(run.converged, "the base converges");
+    let factor = factor.expect("a converged solve keeps its last factor");
+    let related = Model::new(&Problem::circular(100.0, 10.0, 0.6));
+    let solve = |handed: Option<KeptFactor>| {
+        let (mut member, _, _) = setup();
+        member.p.copy_from_slice(&level.p);
+        let mut d = delta;
+        let (run, _) = iterate(
+            &mut member,
+            &related,
+            &mut d,
+            (&newton, &stopping),
+            1e-4,
+            handed,
+            &mut |_, _| {},
+        );
+        assert!(run.converged);
+        (member.p, d, run)
+    };
+    let (p_handed, d_handed, handed) = solve(Some(factor));
+    let (p_fresh, d_fresh, fresh) = solve(None);
+    // Both solve the same equations to a residual of 1e-10: the same solution within a
+    // few times that (the pressures are of order 1).
+    let apart = max_diff(&p_handed, &p_fresh);
+    assert!(apart < 1e-8, "{apart}");
+    assert!((d_handed - d_fresh).abs() < 1e-8);
+    // The handed factor served the first step: one factorisation fewer.
+    assert_eq!(
+        handed.factorisations + 1,
+        fresh.factorisations,
+        "handed {} / fresh {} factorisations",
+        handed.factorisations,
+        fresh.factorisations
+    );
 }
