@@ -158,7 +158,14 @@ impl Cache {
     }
 
     /// Keeps the solution of `key` for the cases that start from it, while the memory allows.
+    /// A start that hands a Newton-Krylov factor on ([`Start::factor`], level 8) is not kept:
+    /// the factor is hundreds of megabytes (the cold paper held 12 GB of them), and kept
+    /// without it the start would solve its members to other bits than their tree's start
+    /// does; such a member's base is solved again with it.
     pub fn keep_start(&self, key: &str, start: Arc<Start>) {
+        if start.factor.is_some() {
+            return;
+        }
         let mut starts = self.starts.lock().unwrap_or_else(|e| e.into_inner());
         let bytes = start.p.len() * std::mem::size_of::<f64>();
         if starts.bytes + bytes <= STARTS_MEMORY && !starts.by_key.contains_key(key) {
