@@ -159,7 +159,7 @@ impl Cache {
 
     /// Keeps the solution of `key` for the cases that start from it, while the memory allows.
     /// A start that hands a Newton-Krylov factor on ([`Start::factor`], level 8) is not kept:
-    /// the factor is hundreds of megabytes (the cold paper held 12 GB of them), and kept
+    /// the factor is hundreds of megabytes (the cold paper peaked at 13.6 GB with them kept), and kept
     /// without it the start would solve its members to other bits than their tree's start
     /// does; such a member's base is solved again with it.
     pub fn keep_start(&self, key: &str, start: Arc<Start>) {

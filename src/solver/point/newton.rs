@@ -235,12 +235,13 @@ pub(crate) fn iterate(
         let mut step = vec![0.0; n];
         // A handed factor's system is given the iterations it may take in place of a new
         // factor; a lagged one is judged by its count after the solve.
-        let krylov_params = match is_lagged && is_handed {
-            true => KrylovParams {
+        let krylov_params = if is_lagged && is_handed {
+            KrylovParams {
                 max_iterations: newton.krylov.max_iterations.min(HANDED_ITERATIONS),
                 ..newton.krylov
-            },
-            false => newton.krylov,
+            }
+        } else {
+            newton.krylov
         };
         let mut krylov = gmres::solve(
             &rhs,
