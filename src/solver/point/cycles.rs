@@ -173,8 +173,7 @@ pub(super) fn converge_by_cycles(
             break;
         }
         if params.stopping.output_tolerance > 0.0 {
-            let [h_central, h_min, sliding, rolling] = stop_outputs(mg, k, params);
-            outputs.push(h_central, h_min, sliding, rolling);
+            outputs.push(stop_outputs(mg, k, params), residual);
         }
         // With the outputs' rule on, only settled outputs end the cycles: a residual below
         // its tolerance, or a pressure change below its own, can come while an output is

@@ -36,6 +36,12 @@ const RHO_MAX: f64 = 0.95;
 /// Cycles [`residual_falls`] needs to judge: the last and the one two before it.
 pub(crate) const FALL_WINDOW: usize = 3;
 
+/// Values of a warm start's history before its cycles may stop: its own outputs and two
+/// cycles' (point-33; three cycles before). Its first cycle moves the outputs from the base's
+/// solution towards the member's, the second shows how fast they converge, and the residual's
+/// fall over it bounds the factor ([`tail`]).
+const WARM_VALUES: usize = 3;
+
 /// Factor by which the residual must have fallen over the last two cycles for settled
 /// outputs (or a settled pressure) to end the cycles ([`residual_falls`]).
 const RESIDUAL_FALL: f64 = 0.8;
@@ -50,10 +56,14 @@ const RESIDUAL_FALL: f64 = 0.8;
 /// solution at level 7, 6 % at level 6. Every case of the 16-case battery that the cycles
 /// converge still had its residual falling by 0.47-0.81 per cycle (0.22-0.66 over two) where
 /// the outputs settled, as have the light cases whose outputs settle in five cycles.
+///
+/// After two cycles (a warm start's shortest solve, [`OutputHistory::new`]) the last must be
+/// at most `sqrt(RESIDUAL_FALL)` of the first, the same fall per cycle.
 pub(crate) fn residual_falls(history: &[f64]) -> bool {
     const { assert!(FALL_WINDOW == 3, "the pattern below reads three values") };
     match history {
         [.., before, _, last] => *last <= RESIDUAL_FALL * *before,
+        [first, last] => *last <= RESIDUAL_FALL.sqrt() * *first,
         _ => false,
     }
 }
@@ -112,7 +122,9 @@ impl WarmStop {
 #[derive(Debug, Default)]
 pub(crate) struct OutputHistory {
     values: Vec<[f64; 4]>,
-    /// Values before the estimate may be made (0 for the default, five; 4 from a warm start).
+    /// The residual after each cycle (a warm start's own not among them).
+    residuals: Vec<f64>,
+    /// Values before the estimate may be made (0 for the default, five; 3 from a warm start).
     needed: usize,
     /// The next finer level's outputs ([`Known::finer`]).
     finer: Option<[f64; 4]>,
@@ -121,23 +133,26 @@ pub(crate) struct OutputHistory {
 impl OutputHistory {
     /// A history for cycles that know `known`. A warm start's outputs are its first entry:
     /// the start is a converged solution, so its outputs belong to the sequence the estimate
-    /// reads, and three cycles after it (one window of four values) may end the solve.
+    /// reads, and two cycles after it (a window of three values, [`WARM_VALUES`]) may end the
+    /// solve.
     pub fn new(known: &Known) -> Self {
         let (values, needed) = match known.start {
-            Some(w) => (vec![w.outputs], 4),
+            Some(w) => (vec![w.outputs], WARM_VALUES),
             None => (Vec::new(), 0),
         };
         OutputHistory {
             values,
+            residuals: Vec::new(),
             needed,
             finer: known.finer,
         }
     }
 
     /// Records the central film, minimum film, sliding and rolling `mu-bar` after a cycle
-    /// (the rolling part 0 where it is not computed).
-    pub fn push(&mut self, h_central: f64, h_min: f64, sliding: f64, rolling: f64) {
+    /// (the rolling part 0 where it is not computed) and the cycle's residual.
+    pub fn push(&mut self, [h_central, h_min, sliding, rolling]: [f64; 4], residual: f64) {
         self.values.push([h_central, h_min, sliding, rolling]);
+        self.residuals.push(residual);
     }
 
     /// The largest estimated relative algebraic error over the outputs, after this cycle and
@@ -186,42 +201,62 @@ impl OutputHistory {
         if n < needed {
             return f64::INFINITY;
         }
-        let last = window_error(&self.values[n - 4..], &allowed);
+        if n == WARM_VALUES {
+            // A warm start's first window: two changes, and the residual's fall over the
+            // second cycle as the least convergence factor ([`tail`]).
+            let contraction = match self.residuals[..] {
+                [.., before, last] if before > 0.0 => last / before,
+                _ => RHO_MAX,
+            };
+            return window_error(&self.values, contraction, &allowed);
+        }
+        let last = window_error(&self.values[n - 4..], 0.0, &allowed);
         if n < 5 {
             return last;
         }
-        last.max(window_error(&self.values[n - 5..n - 1], &allowed))
+        last.max(window_error(&self.values[n - 5..n - 1], 0.0, &allowed))
     }
 }
 
-/// The largest relative error over the outputs estimated from four successive values, each
-/// divided by `allowed(output, values)`.
-fn window_error(v: &[[f64; 4]], allowed: &impl Fn(usize, &[f64; 4]) -> f64) -> f64 {
+/// The largest relative error over the outputs estimated from three or four successive
+/// values (a factor of at least `least` where there are three), each divided by
+/// `allowed(output, values)`.
+fn window_error(v: &[[f64; 4]], least: f64, allowed: &impl Fn(usize, &[f64; 4]) -> f64) -> f64 {
+    let top = &v[v.len() - 1];
     (0..4)
         .map(|o| {
-            let d = [v[1][o] - v[0][o], v[2][o] - v[1][o], v[3][o] - v[2][o]];
-            let e = tail(d);
+            let d: Vec<f64> = v.windows(2).map(|w| w[1][o] - w[0][o]).collect();
+            let e = tail(&d, least);
             if e == 0.0 {
                 0.0
             } else {
-                e / v[3][o].abs() / allowed(o, &v[3])
+                e / top[o].abs() / allowed(o, top)
             }
         })
         .fold(0.0, f64::max)
 }
 
-/// The estimated remaining error after the last three changes `d` of an output (module
-/// documentation): the convergence factor is the larger of the last two ratios, so that
-/// one lucky cycle does not stop the iteration.
-fn tail(d: [f64; 3]) -> f64 {
-    let last = d[2];
+/// The estimated remaining error after the last changes `d` of an output (module
+/// documentation). With three changes the convergence factor is the larger of the last two
+/// ratios, so that one lucky cycle does not stop the iteration; with two (a warm start's
+/// first window) the larger of their ratio and `least`, the residual's fall over the last
+/// cycle: the outputs' first change holds the step from the base to the member, and their
+/// ratio alone can be lucky.
+fn tail(d: &[f64], least: f64) -> f64 {
+    let n = d.len();
+    let last = d[n - 1];
     if last == 0.0 {
         return 0.0;
     }
-    if d[1] * last < 0.0 {
+    if d[n - 2] * last < 0.0 {
         return last.abs();
     }
-    let rho = (last / d[1]).abs().max((d[1] / d[0]).abs()).min(RHO_MAX);
+    let before = if n >= 3 {
+        (d[n - 2] / d[n - 3]).abs()
+    } else {
+        least
+    };
+    let rho = (last / d[n - 2]).abs().max(before).min(RHO_MAX);
     last.abs() * rho / (1.0 - rho)
 }
 
@@ -240,7 +275,7 @@ mod tests {
             let x = sequence(2.0, rho, 8);
             let mut h = OutputHistory::default();
             for v in &x {
-                h.push(*v, *v, *v, *v);
+                h.push([*v, *v, *v, *v], 1.0);
             }
             // The estimate is the larger of the errors after the last two cycles: the one
             // before the last, for a decreasing sequence. A geometric sequence's tail is the
@@ -259,7 +294,7 @@ mod tests {
         let x = sequence(1.0, -0.5, 6);
         let mut h = OutputHistory::default();
         for v in &x {
-            h.push(1.0, *v, 1.0, 0.0);
+            h.push([1.0, *v, 1.0, 0.0], 1.0);
         }
         // The bound is the larger of the last two changes (the one before the last here),
         // relative to the value each ends at; each is at least the true error then.
@@ -279,10 +314,40 @@ mod tests {
         let table4 = [8.146e-6, 5.297e-6, 3.480e-6];
         let slow = [1.515e-6, 1.053e-6, 8.578e-7];
         assert!(residual_falls(&table4) && residual_falls(&slow));
-        assert!(
-            !residual_falls(&[1e-3, 1e-4]),
-            "two cycles are too few to tell"
-        );
+        // Two cycles (a warm start's shortest solve) are judged by the same fall per cycle,
+        // sqrt(0.8) = 0.894; one is too few to tell.
+        assert!(residual_falls(&[1e-3, 8.9e-4]) && !residual_falls(&[1e-3, 9e-4]));
+        assert!(!residual_falls(&[1e-3]), "one cycle is too few to tell");
+    }
+
+    /// A warm start's outputs after two cycles: the first change is the step from the base,
+    /// the second a tenth of it. Settled where the residual halved over the second cycle
+    /// (factor 0.5: the tail is the last change, 1e-4), not where it fell by only 0.95
+    /// (the tail is then 19 times the last change): the outputs' own ratio alone would
+    /// have stopped both.
+    #[test]
+    fn a_warm_start_stops_after_two_cycles_only_where_its_residual_falls_too() {
+        let known = Known {
+            start: Some(WarmStop {
+                outputs: [1.0; 4],
+                residual: 1e-6,
+            }),
+            finer: None,
+        };
+        let history = |second_residual: f64| {
+            let mut h = OutputHistory::new(&known);
+            h.push([1.001; 4], 1e-3);
+            assert!(!h.settled(5e-4), "one cycle is too few");
+            h.push([1.0011; 4], second_residual);
+            h
+        };
+        assert!(history(5e-4).settled(5e-4));
+        let slow = history(9.5e-4);
+        assert!(!slow.settled(5e-4));
+        // With a third cycle the window of four values judges as before.
+        let mut h = slow;
+        h.push([1.00111; 4], 9e-4);
+        assert!(h.settled(5e-4));
     }
 
     #[test]
@@ -295,7 +360,7 @@ mod tests {
         let history = |finer, rolling: &dyn Fn(f64) -> f64| {
             let mut h = OutputHistory::new(&known(finer));
             for v in &x {
-                h.push(*v, *v, *v, rolling(*v));
+                h.push([*v, *v, *v, rolling(*v)], 1.0);
             }
             h
         };
@@ -324,7 +389,7 @@ mod tests {
         let x = sequence(1.0, 0.99, 6);
         let mut h = OutputHistory::default();
         for v in &x {
-            h.push(1.0, 1.0, *v, 0.0);
+            h.push([1.0, 1.0, *v, 0.0], 1.0);
         }
         // The change before the last is the larger one: rho capped at 0.95, the estimate is
         // 19 times it (round-off only).
@@ -332,7 +397,7 @@ mod tests {
         assert!((h.relative_error() / last - 19.0).abs() < 1e-9);
         let mut h = OutputHistory::default();
         for _ in 0..4 {
-            h.push(1.0, 1.0, 1.0, 0.0);
+            h.push([1.0, 1.0, 1.0, 0.0], 1.0);
         }
         assert!(
             h.relative_error().is_infinite(),
