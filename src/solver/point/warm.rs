@@ -12,7 +12,8 @@
 //!
 //! Two stopping details make the warm start pay: the start's own outputs are the first entry
 //! of the output history (a converged state is a point of the sequence the estimate reads,
-//! so three cycles can end the solve instead of five), and settled outputs are accepted
+//! so two cycles can end the solve instead of five:
+//! [`super::stopping::OutputHistory::new`]), and settled outputs are accepted
 //! while the residual is at most a few times the base's accepted one even
 //! where it no longer falls ([`super::stopping::WarmStop`]: a warm start begins near its fixed point; without it the
 //! heaviest members, M 11 070, took a Newton-Krylov detour and were slower than cold).
