@@ -38,7 +38,7 @@ use serde::{Deserialize, Serialize};
 
 /// Revision of the thermal model: part of every point-contact cache key, raised whenever a
 /// change can move a thermal result.
-pub const THERMAL_REVISION: &str = "thermal-3";
+pub const THERMAL_REVISION: &str = "thermal-4";
 
 /// The largest thermal correction of the sliding friction (mean-temperature closure, relative)
 /// under which the paper's isothermal assumption is taken to hold: 5 %, about the scatter of

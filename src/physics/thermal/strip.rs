@@ -74,7 +74,10 @@ pub fn solve_strip(
     // No heat before the first loaded node: the flash sums start there.
     let first = strip.loaded.iter().position(|&l| l).unwrap_or(n);
     for i in 0..n {
-        let upstream = Flash::upstream_pair((f1, f2), (&q1, &q2), i, first);
+        let upstream = (
+            f1.upstream_from(&q1, i, first),
+            f2.upstream_from(&q2, i, first),
+        );
         if !strip.loaded[i] {
             out.nodes.push(film_node(
                 setting.closure,
