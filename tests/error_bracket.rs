@@ -3,7 +3,7 @@
 //! error of a level is at least that distance, up to the finer level's own error), and does
 //! not overstate it by more than a small factor (the rule spends time where the estimate
 //! says the error is); and a level-7 solve's estimate on the light, middle and heavy contacts
-//! brackets its distance to level 9.
+//! brackets its distance to level 9 without overstating it more than 3 times.
 
 use crate::point_contact::{dimensionless, physical, problem};
 use repro::paper::figures::line::table3_line_cases;
@@ -109,7 +109,8 @@ fn point_contact_estimates_bracket_the_next_finer_level() {
 /// The discretisation error a level-7 solve reports (from its own level and the two below,
 /// src/solver/richardson.rs) against the same case solved at level 9: for the central film,
 /// the minimum film and the sliding friction, the estimate must be at least the distance to
-/// level 9. Level 9 is itself not converged, so the distance understates the true error by
+/// level 9, and at most [`MOST_OVERSTATEMENT`] times it (or times [`OVERSTATEMENT_FLOOR`] of the
+/// value). Level 9 is itself not converged, so the distance understates the true error by
 /// the level-9 error (a quarter to a half of the level-7 one at orders 2 to 1): bracketing it
 /// is what an error bar must do at the least. A case on a chain of nested domains
 /// (`Params::nested`) is held against its chain at level 8, whose contact mesh (2.6 / 512)
@@ -170,9 +171,31 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
             estimate.error,
             estimate.order
         );
+        // Nor overstated by more than 3 times the distance, or 3 times 0.1 % of the value
+        // where the distance is smaller (issue 53's bound: an estimate far above the error
+        // refines for nothing). Measured (this test, 2-core AMD EPYC): 1.17-1.92 times the
+        // distance, and case 23's central film, its distance to its chain's level 8 under
+        // 0.1 %, 2.24 times 0.1 % (docs/ACCURACY_NOTES.md, "The estimate, measured").
+        let floor = OVERSTATEMENT_FLOOR * level_9.abs();
+        eprintln!(
+            "{what} {name}: estimate / max(distance, 0.1 %) = {:.2}",
+            estimate.error / distance.max(floor)
+        );
+        assert!(
+            estimate.error <= MOST_OVERSTATEMENT * distance.max(floor),
+            "{what} {name}: estimate {} for a distance {distance} to level 9 {level_9}",
+            estimate.error
+        );
     }
     s
 }
+
+/// The most an estimate may overstate its distance to level 9 (issue 53).
+const MOST_OVERSTATEMENT: f64 = 3.0;
+
+/// The relative distance below which the overstatement is read against this share of the
+/// value instead: 0.1 %, a tenth of the friction target (issue 53).
+const OVERSTATEMENT_FLOOR: f64 = 1e-3;
 
 #[test]
 fn the_error_estimate_brackets_level_9_on_a_light_contact() {
