@@ -27,10 +27,10 @@ pub struct Flash {
 }
 
 /// Independent partial sums of an upstream sum. One running sum waits for its last addition
-/// before each term (4 cycles on the cores seen): the thermal post-process of a level-8 solve
-/// took 0.47 s, a level-7 one 0.053 s, about 6 % of the cold paper's CPU time, most of it in
-/// these sums (2-core AMD EPYC, one thread, mineral oil A at 40 C, 3 GPa, 2 m/s). Eight lanes
-/// keep two vector adders busy.
+/// before each term: the thermal post-process of a level-8 solve took 0.47 s, a level-7 one
+/// 0.053 s (2-core AMD EPYC, one thread, mineral oil A at 40 C, 3 GPa, 2 m/s), and on that
+/// family the running sums were 5.3 % of the samples. Eight lanes, which the compiler makes
+/// into vector multiply-adds, brought them to 2.3 % (docs/ACCURACY_NOTES.md, "Eight lanes").
 const LANES: usize = 8;
 
 /// `sum a_j b_j` over two slices of one length, in [`LANES`] partial sums (each in the
