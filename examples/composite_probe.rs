@@ -5,14 +5,14 @@
 //!
 //! `CASE` as `nested_probe`. The domain and edge are the rule's (`PROBE_EDGE_ZERO`: `P = 0`); the patch's inlet
 //! is the grid line nearest `X_START`, and it spans `2^PATCH_LEVEL` cells of the level in each
-//! direction, symmetric about `Y = 0`. Prints the uniform solutions at `LEVEL` and `LEVEL + 1`
+//! direction, about `Y = PROBE_Y_CENTRE` (default 0). Prints the uniform solutions at `LEVEL` and `LEVEL + 1`
 //! and the composite's outputs after each round.
 mod common;
 
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
 use repro::solver::output::Output;
-use repro::solver::point::composite::{solve_composite, PatchSpec};
+use repro::solver::point::composite::{solve_composite, Patch, PatchSet, PatchSpec};
 use repro::solver::point::{self, Edge, Params};
 use std::time::Instant;
 
@@ -38,14 +38,29 @@ fn main() {
     if let Some(t) = std::env::var_os("PROBE_LOADTOL") {
         params.stopping.load_tolerance = t.to_str().unwrap().parse().unwrap();
     }
+    // PROBE_Y_CENTRE: the patch's middle across the rolling direction (0: about the axis).
+    let y_centre = std::env::var("PROBE_Y_CENTRE").map_or(0.0, |v| v.parse().unwrap());
     let spec = PatchSpec {
         x_start,
+        y_centre,
         cells_level: patch_level,
         margin,
         band,
     };
     let (patch, _) = spec.rectangle(&params.domain, level);
-    println!("domain {:?}\npatch  {patch:?}", params.domain);
+    // PROBE_SET: the product's patches (`inlet`, `lobes`, `inlet-and-lobes`) at LEVEL instead
+    // of the one given.
+    let set = match std::env::var("PROBE_SET").as_deref() {
+        Ok("inlet") => Patch::Inlet.set(level),
+        Ok("lobes") => Patch::Lobes.set(level),
+        Ok("inlet-and-lobes") => Patch::InletAndLobes.set(level),
+        Ok(other) => panic!("PROBE_SET {other}: inlet, lobes or inlet-and-lobes"),
+        Err(_) => PatchSet::fixed(vec![spec]),
+    };
+    println!(
+        "domain {:?}\npatches {set:?} (given: {patch:?})",
+        params.domain
+    );
     // PROBE_NO_UNIFORM skips the uniform solves (a heavy contact's level 9 takes most of an hour).
     let uniform = if std::env::var_os("PROBE_NO_UNIFORM").is_some() {
         vec![]
@@ -73,14 +88,15 @@ fn main() {
             t.elapsed().as_secs_f64()
         );
     }
-    match solve_composite(&problem, &params, &spec, rounds) {
+    match solve_composite(&problem, &params, &set, rounds) {
         Ok(rs) => {
             for (n, r) in rs.iter().enumerate() {
                 println!(
-                    "round {}: Hc {:.5} Hmin {:.5} mu {:.5} delta {:.6} dP {:.2e} residual {:.1e} ({:.1} s)",
+                    "round {}: Hc {:.5} Hmin {:.5} (patch {:.5}) mu {:.5} delta {:.6} dP {:.2e} residual {:.1e} ({:.1} s)",
                     n + 1,
                     r.hc_moes,
                     r.hmin_moes,
+                    r.patch_hmin_moes,
                     r.friction.sliding,
                     r.delta,
                     r.patch_change,
@@ -95,7 +111,7 @@ fn main() {
     // estimate over the composites at the two levels below.
     if std::env::var_os("PROBE_ESTIMATE").is_some() {
         let mut with_patch = params.clone();
-        with_patch.patch = Some(spec);
+        with_patch.patch = Some(set);
         with_patch.accuracy.error_levels = 2;
         match point::solve(&problem, &with_patch, None) {
             Ok(s) => {

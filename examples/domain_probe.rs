@@ -84,6 +84,7 @@ fn main() {
             x_start: f(k + 1),
             x_end: f(k + 2),
             y_half: f(k + 3),
+            y_centre: 0.0,
         }
     };
     let params = point::Params {

@@ -54,6 +54,7 @@ fn main() {
                 x_start: r[0],
                 x_end: r[1],
                 y_half: r[2],
+                y_centre: 0.0,
             },
             &g,
         );

@@ -55,6 +55,7 @@ fn main() {
                 x_start: f(0),
                 x_end: f(1),
                 y_half: f(2),
+                y_centre: 0.0,
             };
             (
                 d,

@@ -4,7 +4,7 @@
 
 use crate::point_contact::{physical, problem, rel};
 use repro::physics::case::Problem;
-use repro::solver::point::composite::{solve_composite, Patch, PatchSpec};
+use repro::solver::point::composite::{solve_composite, Patch, PatchSet, PatchSpec};
 use repro::solver::point::{solve, Edge, Params};
 
 /// The rule's domain and parameters at `level` with the `P = 0` edge (the prototype's), no
@@ -28,7 +28,8 @@ fn an_inlet_patch_gives_the_central_film_of_the_next_level() {
     let p = problem(&physical("mineral-oil-a", 60.0, 3e9, 7.0, 0.005, 8e6, 1.0));
     let coarse = solve(&p, &uniform_params(&p, 6), None).unwrap();
     let fine = solve(&p, &uniform_params(&p, 7), None).unwrap();
-    let rounds = solve_composite(&p, &uniform_params(&p, 6), &PatchSpec::inlet(6), 16).unwrap();
+    let inlet = PatchSet::fixed(vec![PatchSpec::inlet(6)]);
+    let rounds = solve_composite(&p, &uniform_params(&p, 6), &inlet, 16).unwrap();
     let last = rounds.last().unwrap();
     assert!(rounds.len() < 16, "the rounds settle: {rounds:?}");
     assert!(rel(coarse.film.hc_moes, fine.film.hc_moes) > 0.3);
@@ -56,9 +57,11 @@ fn the_rule_with_an_inlet_patch_solves_the_composite_with_its_error_estimate() {
     };
     let (six, seven) = (uniform(6), uniform(7));
     let mut params = Params::for_problem(&p, 6);
-    params.patch = Some(Patch::Inlet.spec(6));
+    params.patch = Some(Patch::Inlet.set(6));
     let s = solve(&p, &params, None).unwrap();
-    let (rect, mesh) = s.patch.expect("the patch is reported");
+    let [(rect, mesh)] = s.patches[..] else {
+        panic!("one patch is reported: {:?}", s.patches)
+    };
     assert!(rect.x_start < -1.0 && rect.x_end < 0.0 && (mesh - s.grid.hx / 2.0).abs() < 1e-12);
     assert_eq!(s.info.level, 6);
     assert!(rel(six.film.hc_moes, seven.film.hc_moes) > 0.05);
@@ -72,5 +75,28 @@ fn the_rule_with_an_inlet_patch_solves_the_composite_with_its_error_estimate() {
     assert_eq!(
         errors.levels.iter().map(|v| v.level).collect::<Vec<_>>(),
         [4, 5, 6]
+    );
+}
+
+#[test]
+fn patches_over_the_side_lobes_open_a_film_the_uniform_level_closes() {
+    // Fig. 4 case 150 (M 4 326, L 9.4) at level 6 with the `P = 0` edge: the uniform level's
+    // film closes in the side lobes (Moes Hmin -0.191), level 7's is 0.4461. The two lobe
+    // patches (a quarter of the domain per direction, at level 7's mesh, centred on the
+    // level's minimum film at X 0.08, Y +-0.98) settle in 8 rounds at 0.3966: open, 11.1 % from
+    // level 7 (measured; at level 7 the same patches come within 1.2 % of level 8). Within
+    // 15 %: the patch resolves the lobe, the surroundings stay at level 6's mesh.
+    let p = problem(&physical("mineral-oil-a", 60.0, 3e9, 7.0, 0.005, 8e6, 1.0));
+    let coarse = solve(&p, &uniform_params(&p, 6), None).unwrap();
+    let fine = solve(&p, &uniform_params(&p, 7), None).unwrap();
+    let rounds = solve_composite(&p, &uniform_params(&p, 6), &Patch::Lobes.set(6), 16).unwrap();
+    let last = rounds.last().unwrap();
+    assert!(rounds.len() < 16, "the rounds settle: {rounds:?}");
+    assert!(coarse.film.hmin_moes < 0.0 && fine.film.hmin_moes > 0.0);
+    assert!(
+        last.hmin_moes > 0.0 && rel(last.hmin_moes, fine.film.hmin_moes) < 0.15,
+        "composite {} against level 7's {}",
+        last.hmin_moes,
+        fine.film.hmin_moes
     );
 }

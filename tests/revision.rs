@@ -70,7 +70,7 @@ fn point(case: &Case, setup: Setup, level: u32, patch: Option<Patch>) -> Job {
     let lubricants = LubricantTable::table1();
     let problem = Problem::from_case(case, &lubricants).expect("a valid probe case");
     let mut params = setup.params(&problem, level);
-    params.patch = patch.map(|p| p.spec(params.level));
+    params.patch = patch.map(|p| p.set(params.level));
     point_job(case, &problem, params, String::new(), &lubricants).expect("a probe job")
 }
 

@@ -138,7 +138,8 @@ def solve(
     ``iso_vg``, ``nu100`` / ``vi``, ``rho15``, ``base_oil``; ``level`` (``exact_level=True``
     for that level alone, no finer one for the accuracy target), ``line=True`` for a
     line contact, ``cold=True``, physics ``viscosity``, ``density``, ``rheology``,
-    ``patch="inlet"`` for the composite grid's inlet patch).
+    ``patch="inlet"``, ``"lobes"`` or ``"inlet-and-lobes"`` for the composite grid's
+    patches).
 
     The case goes through the one case -> parameters rule and is solved from its base, so the
     result has the bits of ``repro solve --json``. The GIL is released during the solve;

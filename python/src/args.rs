@@ -232,10 +232,20 @@ pub fn edge(v: Option<&str>) -> PyResult<Option<point::Edge>> {
     )
 }
 
-/// `patch`: `"inlet"` for the composite grid's inlet patch, or `None` / `"none"` for the
-/// rule's grid.
+/// `patch`: the composite grid's patches, `"inlet"`, `"lobes"` or `"inlet-and-lobes"`, or
+/// `None` / `"none"` for the rule's grid.
 pub fn patch(v: Option<&str>) -> PyResult<Option<Patch>> {
-    Ok(choice("patch", v, &[("none", None), ("inlet", Some(Patch::Inlet))])?.flatten())
+    Ok(choice(
+        "patch",
+        v,
+        &[
+            ("none", None),
+            ("inlet", Some(Patch::Inlet)),
+            ("lobes", Some(Patch::Lobes)),
+            ("inlet-and-lobes", Some(Patch::InletAndLobes)),
+        ],
+    )?
+    .flatten())
 }
 
 /// The element `i` of a broadcast input (length 1 or n).

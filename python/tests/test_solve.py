@@ -187,7 +187,7 @@ def test_the_composite_grid_is_the_cli_one(cli):
     expected = timeless(cli_json(cli, COMPOSITE))
     s = repro.solve(**COMPOSITE)
     assert timeless(s.as_dict()) == expected
-    patch = expected["patch"]
+    [patch] = expected["patches"]
     assert patch["x_start"] < -1.0 < patch["x_end"] < 0.0
 
 

@@ -110,6 +110,8 @@ impl SolveArgs {
             patch: match self.patch {
                 PatchArg::None => None,
                 PatchArg::Inlet => Some(Patch::Inlet),
+                PatchArg::Lobes => Some(Patch::Lobes),
+                PatchArg::InletAndLobes => Some(Patch::InletAndLobes),
             },
             max_cycles: self.max_cycles,
             newton_steps: self.newton_steps,

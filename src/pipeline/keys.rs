@@ -6,6 +6,7 @@ use super::cache::key_of;
 use crate::physics::case::{Case, Physics};
 use crate::physics::thermal::{TARGET_INPUTS, THERMAL_REVISION};
 use crate::solver::line;
+use crate::solver::point::composite::PatchSpec;
 use crate::solver::point::{Edge, FrictionRegion, Params, SOLVER_REVISION};
 use serde::Serialize;
 
@@ -62,7 +63,11 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
     // A composite grid's patch, where one is set: the key of the grid without it, and it.
     match &params.patch {
         None => plain,
-        Some(p) => key_of(&(plain, (p.x_start, p.cells_level, p.margin, p.band))),
+        Some(set) => {
+            let part = |p: &PatchSpec| (p.x_start, p.y_centre, p.cells_level, p.margin, p.band);
+            let fixed: Vec<_> = set.fixed.iter().map(part).collect();
+            key_of(&(plain, fixed, set.lobes.as_ref().map(part)))
+        }
     }
 }
 

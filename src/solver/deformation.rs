@@ -351,6 +351,7 @@ mod tests {
             x_start: -2.0,
             x_end: 1.0,
             y_half: 1.2,
+            y_centre: 0.0,
         };
         let g = Grid::level(&d, 3);
         let kappa = 0.4;
@@ -387,6 +388,7 @@ mod tests {
             x_start: -1.5,
             x_end: 1.5,
             y_half: 1.5,
+            y_centre: 0.0,
         };
         let g = Grid::level(&dom, level);
         let p = g.sample(Hertz::pressure);

@@ -14,8 +14,11 @@ pub struct Domain {
     pub x_start: f64,
     /// Outlet boundary.
     pub x_end: f64,
-    /// Half-width in `Y` (the domain is `-y_half..y_half`).
+    /// Half-width in `Y` (the domain is `y_centre - y_half..y_centre + y_half`).
     pub y_half: f64,
+    /// Middle of the `Y` range: 0 for a whole domain (the contact is symmetric about the
+    /// rolling axis); a composite grid's patch may lie off the axis (`point::patch`).
+    pub y_centre: f64,
 }
 
 impl Default for Domain {
@@ -27,6 +30,7 @@ impl Default for Domain {
             x_start: -2.5,
             x_end: 1.5,
             y_half: 2.0,
+            y_centre: 0.0,
         }
     }
 }
@@ -50,6 +54,34 @@ pub const FAR_FIELD_GAP_RATIO: f64 = 0.06;
 pub const FAR_FIELD_LOAD_SHARE: f64 = 0.08;
 
 impl Domain {
+    /// The rectangle `x[0]..x[1]` by `y[0]..y[1]`. One about the axis to round-off is about it
+    /// exactly, its half-width `-y[0]` (the bits a whole domain's grid gives).
+    pub fn spanning(x: [f64; 2], y: [f64; 2]) -> Self {
+        let y_centre = 0.5 * (y[0] + y[1]);
+        let y_half = 0.5 * (y[1] - y[0]);
+        let (y_half, y_centre) = if y_centre.abs() <= 1e-12 * y_half {
+            (-y[0], 0.0)
+        } else {
+            (y_half, y_centre)
+        };
+        Domain {
+            x_start: x[0],
+            x_end: x[1],
+            y_half,
+            y_centre,
+        }
+    }
+
+    /// The lowest `Y`.
+    pub fn y_start(&self) -> f64 {
+        self.y_centre - self.y_half
+    }
+
+    /// The highest `Y`.
+    pub fn y_end(&self) -> f64 {
+        self.y_centre + self.y_half
+    }
+
     /// The domain a problem is solved on, by every command and pipeline (through
     /// [`crate::solver::point::Params::for_problem`], which puts the fitted far field on its
     /// edge): [`Domain::for_far_field`].
@@ -95,6 +127,7 @@ impl Domain {
             x_start: base.x_start.min(-inlet),
             x_end: base.x_end.max((inlet / 2.0).ceil()),
             y_half: base.y_half.max(reach(1.0 - problem.shape)),
+            y_centre: 0.0,
         }
     }
 
@@ -106,6 +139,7 @@ impl Domain {
             x_start: 2.0 * self.x_start - self.x_end,
             x_end: self.x_end,
             y_half: 2.0 * self.y_half,
+            y_centre: 0.0,
         }
     }
 
@@ -145,6 +179,7 @@ impl Domain {
             x_start: -1.75,
             x_end: 1.25,
             y_half: 1.5,
+            y_centre: 0.0,
         }
     }
 
@@ -156,6 +191,7 @@ impl Domain {
             x_start: -4.5,
             x_end: 1.5,
             y_half: 3.0,
+            y_centre: 0.0,
         }
     }
 }
@@ -185,7 +221,7 @@ impl Grid {
             nx: n,
             ny: n,
             x0: domain.x_start,
-            y0: -domain.y_half,
+            y0: domain.y_start(),
             hx: (domain.x_end - domain.x_start) / n as f64,
             hy: 2.0 * domain.y_half / n as f64,
         }
@@ -281,11 +317,10 @@ impl Grid {
 
     /// The domain this grid covers.
     pub fn domain(&self) -> Domain {
-        Domain {
-            x_start: self.x0,
-            x_end: self.x0 + self.nx as f64 * self.hx,
-            y_half: -self.y0,
-        }
+        Domain::spanning(
+            [self.x0, self.x0 + self.nx as f64 * self.hx],
+            [self.y0, self.y0 + self.ny as f64 * self.hy],
+        )
     }
 
     /// The indices of the boundary nodes.

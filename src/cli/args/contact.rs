@@ -65,6 +65,12 @@ pub enum PatchArg {
     /// about half-way, the minimum film not (docs/ACCURACY_NOTES.md, "Composite grid").
     /// Solved cold, at the level given, with its own error estimate.
     Inlet,
+    /// Two patches over the side lobes (a quarter of the domain per direction each), centred
+    /// on the whole-domain level's minimum film and mirrored about the axis: the minimum film
+    /// of a heavy contact comes out as the uniform grid one level finer gives it.
+    Lobes,
+    /// The inlet's patch and the side lobes': the central and the minimum film.
+    InletAndLobes,
 }
 
 #[derive(Debug, Args)]

@@ -215,12 +215,13 @@ impl SolveInputs {
             if params.nested {
                 bail!(
                     "patch",
-                    "the inlet patch is for the paper's and the heavy-load domains \
-                     (M from about 300 up), whose central film is made in the inlet; this \
-                     case is solved on nested domains already (drop --patch)"
+                    "the composite grid's patches are for the paper's and the heavy-load \
+                     domains (M from about 300 up), whose central film is made in the \
+                     inlet and minimum film in the side lobes; this case is solved on \
+                     nested domains already (drop --patch)"
                 );
             }
-            params.patch = Some(patch.spec(params.level));
+            params.patch = Some(patch.set(params.level));
         }
         Ok(params)
     }

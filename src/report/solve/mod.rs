@@ -86,8 +86,8 @@ impl Solved {
             Solved::Point(p) => {
                 let mut v = point_report(&p.problem, &p.solution).json();
                 v["thermal"] = thermal::json_of(&p.heat);
-                if let Some(patch) = report::patch_json(&p.solution) {
-                    v["patch"] = patch;
+                if let Some(patches) = report::patches_json(&p.solution) {
+                    v["patches"] = patches;
                 }
                 if let Some(nested) = report::nested_json(&p.solution) {
                     v["nested"] = nested;

@@ -303,23 +303,41 @@ fn nested_text(s: &PointSolution) -> String {
     )
 }
 
-/// The composite grid's line of a summary (empty without a patch): the patch's rectangle and
-/// mesh inside the whole domain's.
+/// The composite grid's lines of a summary (none without a patch): each patch's rectangle
+/// and mesh inside the whole domain's.
 fn patch_text(s: &PointSolution) -> String {
-    let Some((d, h)) = s.patch else {
-        return String::new();
-    };
     let whole = s.grid.domain();
-    format!(
-        "patch       X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4}) inside X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4}), coupled both ways\n",
-        d.x_start, d.x_end, d.y_half, h, whole.x_start, whole.x_end, whole.y_half, s.grid.hx
-    )
+    s.patches
+        .iter()
+        .map(|(d, h)| {
+            format!(
+                "patch       X {:.3}..{:.3}, Y {:.3}..{:.3} (mesh {:.4}) inside X {:.3}..{:.3}, |Y| <= {:.3} (mesh {:.4}), coupled both ways\n",
+                d.x_start,
+                d.x_end,
+                d.y_start(),
+                d.y_end(),
+                h,
+                whole.x_start,
+                whole.x_end,
+                whole.y_half,
+                s.grid.hx
+            )
+        })
+        .collect()
 }
 
-/// The same for `--json`: `{"x_start", "x_end", "y_half", "mesh"}`.
-pub(super) fn patch_json(s: &PointSolution) -> Option<serde_json::Value> {
-    let (d, h) = s.patch?;
-    Some(json!({"x_start": d.x_start, "x_end": d.x_end, "y_half": d.y_half, "mesh": h}))
+/// The same for `--json`: one `{"x_start", "x_end", "y_start", "y_end", "mesh"}` per patch
+/// (`None` without a patch).
+pub(super) fn patches_json(s: &PointSolution) -> Option<serde_json::Value> {
+    (!s.patches.is_empty()).then(|| {
+        s.patches
+            .iter()
+            .map(|(d, h)| {
+                json!({"x_start": d.x_start, "x_end": d.x_end, "y_start": d.y_start(),
+                       "y_end": d.y_end(), "mesh": h})
+            })
+            .collect()
+    })
 }
 
 /// The same for `--json`: `{"innermost": {...}, "case_domain": {...}}`.

@@ -242,7 +242,7 @@ mod tests {
                 errors: outputs.errors,
                 coarser: Vec::new(),
                 surroundings: None,
-                patch: None,
+                patches: Vec::new(),
                 tau: None,
                 factor: None,
             }

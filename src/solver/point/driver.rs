@@ -7,7 +7,7 @@
 //! ([`super::composite`]) solves one on its patch inside rounds that couple the patch with the
 //! whole domain, and estimates over whole composites. Neither refines.
 
-use super::composite::PatchSpec;
+use super::composite::PatchSet;
 use super::{chain, composite, uniform, Params, PointSolution, Start};
 use crate::physics::case::Problem;
 use crate::solver::output::{Progress, SolveError};
@@ -20,8 +20,8 @@ pub(super) enum Strategy<'a> {
     /// The domain and rectangles nested inside it down to the contact's core, each at the
     /// same level inside the solution around it.
     Nested,
-    /// The domain and a patch at half its mesh, coupled both ways.
-    Composite(&'a PatchSpec),
+    /// The domain and patches at half its mesh, coupled both ways.
+    Composite(&'a PatchSet),
 }
 
 impl<'a> Strategy<'a> {

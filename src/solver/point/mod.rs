@@ -98,9 +98,9 @@ pub struct PointSolution {
     /// The case-sized domain's solution around a chain of nested domains ([`chain`]), whose
     /// innermost grid this is; a related case starts from it.
     pub surroundings: Option<Box<PointSolution>>,
-    /// The patch of a composite grid ([`Params::patch`]): its rectangle and mesh; the fields
-    /// above are the whole domain's.
-    pub patch: Option<(Domain, f64)>,
+    /// The patches of a composite grid ([`Params::patch`]): each one's rectangle and mesh;
+    /// the fields above are the whole domain's. Empty on other grids.
+    pub patches: Vec<(Domain, f64)>,
     /// The final level's outputs tau-extrapolated ([`AccuracyParams::tau_extrapolation`]).
     pub tau: Option<TauExtrapolated>,
     /// The final level's last Newton-Krylov factor, from level 8 up: a related case started

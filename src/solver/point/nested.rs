@@ -97,7 +97,7 @@ impl Surround {
         fine: (f64, f64),
     ) -> Self {
         let tol = 1e-6 * wide.hx.min(wide.hy);
-        let (y0, y1) = (-inner.y_half, inner.y_half);
+        let (y0, y1) = (inner.y_start(), inner.y_end());
         // On the edge, the nested grid's interior cells start half a fine cell inside.
         let (ex, ey) = (0.5 - 0.5 * fine.0 / wide.hx, 0.5 - 0.5 * fine.1 / wide.hy);
         let mut load_share = wide.zeros();
@@ -166,12 +166,15 @@ impl Surround {
             (2.0 * fine.hx - wide.hx).abs() < 1e-9 && (2.0 * fine.hy - wide.hy).abs() < 1e-9,
             "a patch has half the wide mesh"
         );
-        let b = band.min(i0).min(j0).min(wide.nx - i0 - cells);
-        let ext_domain = Domain {
-            x_start: wide.x(i0 - b),
-            x_end: wide.x(i0 + cells + b),
-            y_half: -wide.y(j0 - b),
-        };
+        let b = band
+            .min(i0)
+            .min(j0)
+            .min(wide.nx - i0 - cells)
+            .min(wide.ny - j0 - cells);
+        let ext_domain = Domain::spanning(
+            [wide.x(i0 - b), wide.x(i0 + cells + b)],
+            [wide.y(j0 - b), wide.y(j0 + cells + b)],
+        );
         let ext = Grid {
             nx: fine.nx + 4 * b,
             ny: fine.ny + 4 * b,
@@ -256,19 +259,32 @@ impl Surround {
         h_limit: f64,
         rolling: bool,
     ) -> (f64, Option<f64>) {
+        Surround::outside_all(&[self], problem, h_limit, rolling)
+    }
+
+    /// [`Surround::outside_friction`] outside every rectangle of `parts`: surroundings of one
+    /// wide solution whose rectangles do not overlap (a composite grid's patches), so that a
+    /// wide node's share outside them all is the product of its shares outside each.
+    pub fn outside_all(
+        parts: &[&Surround],
+        problem: &Problem,
+        h_limit: f64,
+        rolling: bool,
+    ) -> (f64, Option<f64>) {
         let model = Model::new(problem);
-        let g = &self.wide;
+        let first = parts[0];
+        let g = &first.wide;
         let (mut sliding, mut poiseuille) = (0.0, 0.0);
         for j in 1..g.ny {
             for i in 1..g.nx {
                 let k = g.idx(i, j);
-                let (p, h) = (self.p[k], self.h[k]);
-                if p <= 0.0 || h > h_limit || self.cover_share[k] == 0.0 {
+                let (p, h) = (first.p[k], first.h[k]);
+                let share: f64 = parts.iter().map(|s| s.cover_share[k]).product();
+                if p <= 0.0 || h > h_limit || share == 0.0 {
                     continue;
                 }
-                sliding += self.cover_share[k] * model.mean_shear_stress(p, h);
-                poiseuille +=
-                    self.cover_share[k] * h * (self.p[k + 1] - self.p[k - 1]) / (2.0 * g.hx);
+                sliding += share * model.mean_shear_stress(p, h);
+                poiseuille += share * h * (first.p[k + 1] - first.p[k - 1]) / (2.0 * g.hx);
             }
         }
         let area = g.hx * g.hy / LOAD;
@@ -279,7 +295,19 @@ impl Surround {
     /// `inner`, the friction of the grid inside, plus these surroundings' outside it
     /// ([`Surround::outside_friction`]; rolling where `inner` has it).
     pub fn plus_outside(&self, problem: &Problem, h_limit: f64, inner: Friction) -> Friction {
-        let (sliding, rolling) = self.outside_friction(problem, h_limit, inner.rolling.is_some());
+        Surround::plus_outside_all(&[self], problem, h_limit, inner)
+    }
+
+    /// `inner`, the friction of the grids inside the rectangles of `parts`, plus the wide
+    /// solution's outside them all ([`Surround::outside_all`]).
+    pub fn plus_outside_all(
+        parts: &[&Surround],
+        problem: &Problem,
+        h_limit: f64,
+        inner: Friction,
+    ) -> Friction {
+        let (sliding, rolling) =
+            Surround::outside_all(parts, problem, h_limit, inner.rolling.is_some());
         Friction {
             sliding: inner.sliding + sliding,
             rolling: inner.rolling.map(|r| r + rolling.unwrap_or(0.0)),
@@ -349,6 +377,7 @@ mod tests {
             x_start: -1.75,
             x_end: 1.25,
             y_half: 1.5,
+            y_centre: 0.0,
         };
         let wide = Grid::level(&domain, 5);
         let (i0, j0) = (27, 28);
@@ -356,6 +385,7 @@ mod tests {
             x_start: wide.x(i0),
             x_end: wide.x(i0 + 8),
             y_half: -wide.y(j0),
+            y_centre: 0.0,
         };
         let fine = Grid::level(&patch, 3);
         let reference_grid = Grid::level(&domain, 6);
@@ -411,11 +441,13 @@ mod tests {
             x_start: -4.8,
             x_end: 1.6,
             y_half: 3.2,
+            y_centre: 0.0,
         };
         let inner = Domain {
             x_start: -1.6,
             x_end: 1.2,
             y_half: 1.6,
+            y_centre: 0.0,
         };
         let wide = Grid::level(&wide_domain, 6);
         let fine = Grid::level(&inner, 6);

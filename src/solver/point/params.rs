@@ -36,10 +36,10 @@ pub struct Params {
     /// ([`Params::for_problem`]); a domain without any (an expert's `--domain`, Fig. 6's
     /// paper setup) is solved alone.
     pub nested: bool,
-    /// Solve on a composite grid: the domain at `level` and this patch of it at half its mesh,
-    /// coupled both ways (`composite`; `repro solve --patch inlet`, an expert's
+    /// Solve on a composite grid: the domain at `level` and these patches of it at half its
+    /// mesh, coupled both ways (`composite`; `repro solve --patch inlet`, an expert's
     /// option: not the rule's, which stays within issue 39's cost). Default none.
-    pub patch: Option<super::patch::PatchSpec>,
+    pub patch: Option<super::patch::PatchSet>,
     /// How the conductances meet at the half points of Eq. (1) on every level
     /// ([`super::HalfPointMean`]). Default the arithmetic mean.
     pub half_point: super::HalfPointMean,

@@ -17,6 +17,7 @@ pub const CORE: Domain = Domain {
     x_start: -1.6,
     x_end: 1.3,
     y_half: 1.3,
+    y_centre: 0.0,
 };
 
 /// Each rectangle is the domain around it divided by this about the contact centre: case 23's
@@ -39,6 +40,7 @@ pub fn rectangles(domain: &Domain) -> Vec<Domain> {
             x_start: (d.x_start / SHRINK).min(CORE.x_start),
             x_end: (d.x_end / SHRINK).max(CORE.x_end),
             y_half: (d.y_half / SHRINK).max(CORE.y_half),
+            y_centre: 0.0,
         };
         out.push(d);
     }
@@ -53,6 +55,7 @@ pub fn snap(rect: &Domain, grid: &Grid) -> Domain {
         x_start: down(rect.x_start, grid.x0, grid.hx),
         x_end: up(rect.x_end, grid.x0, grid.hx),
         y_half: -down(-rect.y_half, grid.y0, grid.hy),
+        y_centre: 0.0,
     }
 }
 
@@ -67,11 +70,13 @@ mod tests {
             x_start: -13.5,
             x_end: 7.0,
             y_half: 13.5,
+            y_centre: 0.0,
         });
         assert_eq!(r.len(), 2);
         assert!((r[0].x_start + 4.5).abs() < 1e-12 && (r[0].y_half - 4.5).abs() < 1e-12);
         let core_high = Domain {
             y_half: 1.5,
+            y_centre: 0.0,
             ..CORE
         };
         assert_eq!(
@@ -90,6 +95,7 @@ mod tests {
                 x_start: -13.5,
                 x_end: 7.0,
                 y_half: 13.5,
+                y_centre: 0.0,
             },
             5,
         );

@@ -271,7 +271,7 @@ impl Covering for Uniform<'_> {
             errors: outputs.errors,
             coarser: outputs.coarser,
             surroundings: None,
-            patch: None,
+            patches: Vec::new(),
             tau: outputs.tau,
             factor,
         }

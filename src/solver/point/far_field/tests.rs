@@ -80,6 +80,7 @@ fn the_outside_load_of_a_far_edge_is_g_over_distance() {
         x_start: -r,
         x_end: r,
         y_half: r,
+        y_centre: 0.0,
     };
     let n = 200_000;
     let dpsi = 2.0 * ff.phi / n as f64;
@@ -129,6 +130,7 @@ fn fitting_recovers_the_amplitude_of_an_asymptotic_field() {
             x_start: -12.0,
             x_end: 4.0,
             y_half: 8.0,
+            y_centre: 0.0,
         },
         4,
     );
@@ -152,6 +154,7 @@ fn refitting_takes_the_secant_step_to_the_fixed_point() {
             x_start: -12.0,
             x_end: 4.0,
             y_half: 8.0,
+            y_centre: 0.0,
         },
         4,
     );
