@@ -287,15 +287,29 @@ fn the_line_contact_refuses_an_edge() {
 }
 
 /// `--patch inlet` solves a mid-range contact on the composite grid and says where the patch
-/// is; a light contact (nested domains already) and a line contact refuse it, naming the flag.
+/// is, `--patch lobes` where its two patches are (mirror images about the axis); a light
+/// contact (nested domains already) and a line contact refuse it, naming the flag.
 #[test]
 fn the_inlet_patch_is_reported_and_refused_where_it_does_not_apply() {
-    let v = repro_json(&[
-        "solve", "--m", "500", "--l", "10", "--s-bar", "0.1", "--level", "5", "--patch", "inlet",
-        "--json", "-q",
-    ]);
-    let x = |key: &str| v["patch"][key].as_f64().unwrap();
-    assert!(x("x_start") < -1.0 && x("x_end") < 0.0, "{}", v["patch"]);
+    let solve = |patch: &str, level: &str| {
+        repro_json(&[
+            "solve", "--m", "500", "--l", "10", "--s-bar", "0.1", "--level", level, "--patch",
+            patch, "--json", "-q",
+        ])["patches"]
+            .clone()
+    };
+    let inlet = solve("inlet", "5");
+    let x = |key: &str| inlet[0][key].as_f64().unwrap();
+    assert!(x("x_start") < -1.0 && x("x_end") < 0.0, "{inlet}");
+    assert_eq!(inlet.as_array().map(Vec::len), Some(1), "{inlet}");
+    // At level 6 (3 s): at level 5 the lobes' patches of 16 cells do not settle.
+    let lobes = solve("lobes", "6");
+    let y = |n: usize, key: &str| lobes[n][key].as_f64().unwrap();
+    assert!(y(0, "y_start") > 0.0 && y(1, "y_end") < 0.0, "{lobes}");
+    assert!(
+        (y(0, "y_start") + y(1, "y_end")).abs() < 1e-12,
+        "mirrored: {lobes}"
+    );
     for refused in [
         &[
             "solve", "--m", "5", "--l", "10", "--s-bar", "0.1", "--patch", "inlet",

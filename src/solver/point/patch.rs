@@ -35,8 +35,9 @@ impl Patch {
 pub struct PatchSpec {
     /// Its inlet: the whole-domain level's grid line nearest this `X`.
     pub x_start: f64,
-    /// Its middle across the rolling direction: the grid line nearest this `Y` less half the
-    /// patch (0: symmetric about the axis), within the domain.
+    /// Its middle across the rolling direction: the grid line nearest this `Y` (0: symmetric
+    /// about the axis; a tie rounds away from the domain's middle, so that `-Y` gives the
+    /// mirror image), the patch moved into the domain where it would leave it.
     pub y_centre: f64,
     /// It spans `2^cells_level` cells of the whole-domain level in each direction: its own
     /// grid is level `cells_level` on its rectangle.
@@ -74,10 +75,10 @@ impl PatchSpec {
         let cells = 1usize << self.cells_level;
         let nearest = |s: f64, n: usize| (s.round().max(0.0) as usize).min(n - cells);
         let i0 = nearest((self.x_start - coarse.x0) / coarse.hx, coarse.nx);
-        let j0 = nearest(
-            (self.y_centre - coarse.y0) / coarse.hy - (cells / 2) as f64,
-            coarse.ny,
-        );
+        // Rounded from the domain's middle, where `round` is symmetric in sign.
+        let half = (coarse.ny / 2) as f64;
+        let from_middle = ((self.y_centre - coarse.y0) / coarse.hy - half).round();
+        let j0 = nearest(half + from_middle - (cells / 2) as f64, coarse.ny);
         let patch = Domain::spanning(
             [coarse.x(i0), coarse.x(i0 + cells)],
             [coarse.y(j0), coarse.y(j0 + cells)],
@@ -286,6 +287,39 @@ mod tests {
             (lobe.x_start - inlet.x_end).abs() < 1e-12,
             "{lobe:?} after {inlet:?}"
         );
+    }
+
+    #[test]
+    fn a_patch_and_its_mirror_lie_on_mirrored_grid_lines() {
+        // The paper's domain at level 4 (mesh 0.125 across): a centre of +-0.9375 falls half
+        // way between grid lines; rounded from the bottom edge the two patches of 8 cells came
+        // out at 0.5..1.5 and -1.375..-0.375.
+        let domain = Domain::default();
+        let at = |y_centre: f64| {
+            PatchSpec {
+                x_start: -0.25,
+                y_centre,
+                cells_level: 3,
+                margin: 1,
+                band: 8,
+            }
+            .rectangle(&domain, 4)
+            .0
+        };
+        for y in [0.9375, 0.9, 1.0, 1.6] {
+            let (up, down) = (at(y), at(-y));
+            assert!(
+                (up.y_start() + down.y_end()).abs() < 1e-12,
+                "{up:?} {down:?}"
+            );
+            assert!(
+                (up.y_end() + down.y_start()).abs() < 1e-12,
+                "{up:?} {down:?}"
+            );
+        }
+        // Moved into the domain (|Y| <= 2) where it would leave it.
+        assert!((at(1.9).y_end() - 2.0).abs() < 1e-12);
+        assert_eq!(at(0.0).y_centre, 0.0);
     }
 
     #[test]
