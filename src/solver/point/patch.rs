@@ -116,7 +116,8 @@ impl PatchSet {
         }
     }
 
-    /// The finest patch level: the size the set's validation reads.
+    /// The levels of the set's patches (the lobes' before they are placed): the smallest
+    /// bounds how many levels below the composite's own its estimate can solve.
     pub fn cells_levels(&self) -> impl Iterator<Item = u32> + '_ {
         self.fixed.iter().chain(&self.lobes).map(|s| s.cells_level)
     }
