@@ -3,6 +3,7 @@
 
 use super::level::{LevelFields, Model};
 use super::transfer::coarsen;
+use super::{Params, MAX_LEVEL, MIN_LEVEL};
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::SolveError;
 
@@ -69,6 +70,23 @@ impl PatchSpec {
         }
     }
 
+    /// Whether this is a patch the composite at `params` can take.
+    pub(super) fn check(&self, params: &Params) -> Result<(), SolveError> {
+        if self.cells_level > params.level
+            || self.cells_level < MIN_LEVEL
+            || params.level > MAX_LEVEL
+            || self.margin == 0
+        {
+            return Err(SolveError::InvalidParams(format!(
+                "the composite grid takes a level up to {MAX_LEVEL}, a patch within the \
+                 domain of level {MIN_LEVEL} or finer and a margin of at least one cell \
+                 (level {}, patch level {}, margin {})",
+                params.level, self.cells_level, self.margin
+            )));
+        }
+        Ok(())
+    }
+
     /// The patch's rectangle on `level`'s grid of `domain`, and its corner node there.
     pub fn rectangle(&self, domain: &Domain, level: u32) -> (Domain, [usize; 2]) {
         let coarse = Grid::level(domain, level);
@@ -114,6 +132,15 @@ impl PatchSet {
             fixed,
             lobes: Some(PatchSpec::inlet(level)),
         }
+    }
+
+    /// Whether every patch of the set is one the composite at `params` can take, before any
+    /// solve (the lobes' by their size; where they lie is checked once they are placed).
+    pub(super) fn check(&self, params: &Params) -> Result<(), SolveError> {
+        self.fixed
+            .iter()
+            .chain(&self.lobes)
+            .try_for_each(|spec| spec.check(params))
     }
 
     /// The levels of the set's patches (the lobes' before they are placed): the smallest

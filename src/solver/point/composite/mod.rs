@@ -51,6 +51,7 @@ pub fn solve_composite(
     set: &PatchSet,
     max_rounds: usize,
 ) -> Result<Vec<CompositeRound>, SolveError> {
+    set.check(params)?;
     let mut place = |h: &[f64]| set.place(&params.domain, params.level, h);
     Ok(run(problem, params, &mut place, max_rounds, &mut |_| {})?.rounds)
 }
@@ -79,23 +80,6 @@ struct OnePatch {
     params: Params,
     spec: PatchSpec,
     last: Option<PointSolution>,
-}
-
-/// Whether `spec` is a patch the composite at `params` can take.
-fn check(params: &Params, spec: &PatchSpec) -> Result<(), SolveError> {
-    if spec.cells_level > params.level
-        || spec.cells_level < MIN_LEVEL
-        || params.level > MAX_LEVEL
-        || spec.margin == 0
-    {
-        return Err(SolveError::InvalidParams(format!(
-            "the composite grid takes a level up to {MAX_LEVEL}, a patch within the domain \
-             of level {MIN_LEVEL} or finer and a margin of at least one cell (level {}, patch \
-             level {}, margin {})",
-            params.level, spec.cells_level, spec.margin
-        )));
-    }
-    Ok(())
 }
 
 /// Places a composite's patches from the whole-domain level's cold film.
@@ -129,7 +113,7 @@ fn run(
     let specs = place(&mg.levels[top].h)?;
     let mut patches = Vec::with_capacity(specs.len());
     for spec in specs {
-        check(params, &spec)?;
+        spec.check(params)?;
         let (rect, corner) = spec.rectangle(&params.domain, params.level);
         // `Delta` is the whole domain's: the patch relaxes no force balance of its own (with
         // its own balance and its edge in a heavy contact, the patch moved `Delta` by twice
@@ -317,6 +301,7 @@ pub(super) fn solve_point(
     observer: Option<&mut dyn FnMut(&Progress)>,
 ) -> Result<PointSolution, SolveError> {
     let clock = Instant::now();
+    set.check(params)?;
     let mut observe = observing(observer);
     // The levels below as far as every patch keeps a grid of its own (level 3).
     let smallest = set.cells_levels().min().unwrap_or(MIN_LEVEL);
