@@ -67,9 +67,12 @@ pub enum PatchArg {
     Inlet,
     /// Two patches over the side lobes (a quarter of the domain per direction each), centred
     /// on the whole-domain level's minimum film and mirrored about the axis: the minimum film
-    /// of a heavy contact comes out as the uniform grid one level finer gives it.
+    /// of a heavy contact comes out as the uniform grid one level finer gives it, at more than
+    /// that grid's time (docs/ACCURACY_NOTES.md, "Patches over the side lobes").
     Lobes,
-    /// The inlet's patch and the side lobes': the central and the minimum film.
+    /// The inlet's patch and the side lobes': the central and the minimum film of the uniform
+    /// grid one level finer, the friction 60 % of the way there, at 1.7-1.8 times that grid's
+    /// time.
     InletAndLobes,
 }
 
@@ -177,7 +180,7 @@ pub struct SolveArgs {
     /// The condition on the domain's edge (an expert override, like --domain).
     #[arg(long, value_enum, default_value = "auto", help_heading = "Numerics")]
     pub edge: EdgeArg,
-    /// A composite grid's patch (an expert option; not the figures').
+    /// A composite grid's patches (an expert option; not the figures').
     #[arg(long, value_enum, default_value = "none", help_heading = "Numerics")]
     pub patch: PatchArg,
     /// Most multigrid cycles on the finest level.
