@@ -161,6 +161,7 @@ impl PatchSet {
         h: &[f64],
     ) -> Result<Vec<PatchSpec>, SolveError> {
         let mut specs = self.fixed.clone();
+        let given: Vec<Domain> = specs.iter().map(|s| s.rectangle(domain, level).0).collect();
         if let Some(lobe) = self.lobes {
             let g = Grid::level(domain, level);
             let k = (0..g.len())
@@ -180,12 +181,9 @@ impl PatchSet {
                     y_centre,
                     ..centred
                 };
-                for fixed in &self.fixed {
-                    if overlap(
-                        &spec.rectangle(domain, level).0,
-                        &fixed.rectangle(domain, level).0,
-                    ) {
-                        spec.x_start = fixed.rectangle(domain, level).0.x_end;
+                for fixed in &given {
+                    if overlap(&spec.rectangle(domain, level).0, fixed) {
+                        spec.x_start = fixed.x_end;
                     }
                 }
                 specs.push(spec);

@@ -26,7 +26,7 @@ use super::cold;
 use super::converge::{converge_level, How, Tally};
 use super::covering::{self, Covering, Outputs};
 use super::ladder;
-use super::level::{LevelFields, LOAD};
+use super::level::{LevelFields, Model, LOAD};
 use super::nested::Surround;
 use super::patch::{carry_into, Carried};
 pub use super::patch::{Patch, PatchSet, PatchSpec};
@@ -158,7 +158,7 @@ fn run(
         let (residual, _) = mg.residual_norm(top);
         let coarse = &mg.levels[top];
         let state = (&coarse.p[..], &coarse.h[..], mg.delta);
-        let mut solved = Vec::with_capacity(patches.len());
+        let mut solved: Vec<PatchSolved> = Vec::with_capacity(patches.len());
         for patch in &patches {
             // The split of the friction and film outside the patch; without a band also the
             // patch's surroundings.
@@ -218,44 +218,17 @@ fn run(
             seconds: began.elapsed().as_secs_f64(),
             ..round
         });
-        let done = settled(&rounds, tolerance) && polishing;
-        if settled(&rounds, tolerance) {
-            polishing = true;
+        let now_settled = settled(&rounds, tolerance);
+        settled_rounds = now_settled && polishing;
+        polishing |= now_settled;
+        if !settled_rounds {
+            carry(&mut mg.levels[top], &patches, &solved, (&model, &geometry));
         }
-        if done {
-            for (patch, (sol, ..)) in patches.iter_mut().zip(solved) {
-                patch.last = Some(sol);
-            }
-            settled_rounds = true;
-            break;
-        }
-        // The patches as levels (each film from its own pressure and its surroundings'),
-        // restricted, and carried into the whole-domain level.
-        let fine: Vec<LevelFields> = solved
-            .iter()
-            .map(|(sol, _, surround)| {
-                let pg = sol.grid;
-                let mut fine = LevelFields::new(pg, &model);
-                fine.hrhs = pg.sample(|x, y| model.geometry(x, y) + surround.film_offset(x, y));
-                fine.p.clone_from(&sol.p);
-                fine.refresh(sol.delta, &model);
-                fine
-            })
-            .collect();
-        let carried: Vec<Carried> = patches
-            .iter()
-            .zip(&fine)
-            .zip(&solved)
-            .map(|((patch, fine), (sol, ..))| Carried {
-                fine,
-                delta: sol.delta,
-                corner: patch.corner,
-                margin: patch.spec.margin,
-            })
-            .collect();
-        carry_into(&mut mg.levels[top], &carried, (&model, &geometry));
         for (patch, (sol, ..)) in patches.iter_mut().zip(solved) {
             patch.last = Some(sol);
+        }
+        if settled_rounds {
+            break;
         }
         if !polishing {
             mg.cycle(top);
@@ -284,6 +257,44 @@ fn run(
         tally,
         method,
     })
+}
+
+/// A round's patch solutions with their surroundings: the split of the friction
+/// ([`Surround::new`]) and the surroundings the patch was solved in.
+type PatchSolved = (PointSolution, Arc<Surround>, Arc<Surround>);
+
+/// The round's patches `solved` as levels (each film from its own pressure and its
+/// surroundings'), restricted and carried into the whole-domain level `level`, whose film
+/// right-hand side outside the patches is `geometry`.
+fn carry(
+    level: &mut LevelFields,
+    patches: &[OnePatch],
+    solved: &[PatchSolved],
+    (model, geometry): (&Model, &[f64]),
+) {
+    let fine: Vec<LevelFields> = solved
+        .iter()
+        .map(|(sol, _, surround)| {
+            let pg = sol.grid;
+            let mut fine = LevelFields::new(pg, model);
+            fine.hrhs = pg.sample(|x, y| model.geometry(x, y) + surround.film_offset(x, y));
+            fine.p.clone_from(&sol.p);
+            fine.refresh(sol.delta, model);
+            fine
+        })
+        .collect();
+    let carried: Vec<Carried> = patches
+        .iter()
+        .zip(&fine)
+        .zip(solved)
+        .map(|((patch, fine), (sol, ..))| Carried {
+            fine,
+            delta: sol.delta,
+            corner: patch.corner,
+            margin: patch.spec.margin,
+        })
+        .collect();
+    carry_into(level, &carried, (model, geometry));
 }
 
 /// The product's composite solve (`Params::patch`; `repro solve --patch inlet`): the
