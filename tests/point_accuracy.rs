@@ -7,6 +7,7 @@ use crate::point_contact::{assert_sound, dimensionless, physical, problem, rel};
 use crate::support::appendix_problem;
 use repro::physics::rheology::Rheology;
 use repro::solver::output::{LadderStop, Method, Output, SolveError};
+use repro::solver::point::chain::solve_chain_estimated;
 use repro::solver::point::{solve, solve_from, AccuracyTarget, Params, PointSolution, Start};
 
 #[test]
@@ -270,12 +271,20 @@ fn a_light_member_at_small_slip_converges_on_its_nested_domains() {
     // Fig. 6 case 19 (case 23 at S 0.1 %, tau0 4 MPa): with the core's outlet edge at X = 1.0,
     // inside its pressurised outlet (cavitation at X = 1.16), the innermost rectangle did not
     // converge and the case fell back to its case-sized domain, friction estimated 6.4 % off
-    // at level 7 (about 14 % at level 6 by its order 1.16). On the chain, level 6 is 1.8 %
-    // off by its estimate (order 1.31): 3 % separates the two with room either way.
+    // at level 7 (about 14 % at level 6 by its order 1.16). Asked at level 5, the chain misses
+    // the rule's 1 % in friction and is refined to level 6, where it is 1.8 % off by its
+    // estimate (order 1.31): 3 % separates the two with room either way.
     let c = physical("5p4e", 40.0, 1e9, 12.0, 0.001, 4e6, 1.0);
     let p = problem(&c);
-    let s = solve(&p, &Params::for_problem(&p, 6), None).expect("case 19 at level 6");
-    assert!(s.surroundings.is_some(), "solved on its nested domains");
+    let s = solve(&p, &Params::for_problem(&p, 5), None).expect("case 19 at level 5");
+    let wide = s
+        .surroundings
+        .as_ref()
+        .expect("solved on its nested domains");
+    assert_eq!(s.info.level, 6, "refined one level");
+    // The members start from the case-sized domain at the level asked, not the refined one:
+    // a member's result does not depend on whether its base refined.
+    assert_eq!(wide.info.level, 5);
     let e = s.errors.as_ref().expect("an error estimate");
     let mu = e
         .estimate(Output::MuBarSliding)
@@ -286,6 +295,18 @@ fn a_light_member_at_small_slip_converges_on_its_nested_domains() {
         s.friction.sliding,
         100.0 * mu.relative(s.friction.sliding)
     );
+    // The oracle: the chain solved at level 6 directly, its estimate over the chains at 4
+    // and 5 solved afresh. The refined chain is solved cold, and its ladder reads the
+    // level-5 solve's chains: the same bits.
+    let at_6 = Params::for_problem(&p, 6);
+    let (chain, direct) = solve_chain_estimated(&p, &at_6, 2).unwrap();
+    let inner = chain.innermost();
+    assert_eq!(
+        (s.film.h_central, s.film.h_min),
+        (inner.film.h_central, inner.film.h_min)
+    );
+    assert_eq!(s.friction.sliding, chain.friction(&p).sliding);
+    assert_eq!(e.levels, direct.levels);
 }
 
 #[test]
@@ -369,7 +390,6 @@ fn the_fitted_far_field_agrees_with_the_a_priori_one_on_a_light_contact() {
 /// rectangles at levels 6-8 and agreeing with the uniform levels' extrapolation (0.2274).
 #[test]
 fn a_chain_of_nested_domains_brings_a_light_contact_within_the_targets() {
-    use repro::solver::point::chain::solve_chain_estimated;
     let problem = problem(&dimensionless(5.0, 10.0, 0.1, Rheology::Eyring));
     let params = Params::for_problem(&problem, 6);
     let (chain, errors) = solve_chain_estimated(&problem, &params, 2).unwrap();

@@ -189,6 +189,18 @@ impl OutputErrors {
         }
     }
 
+    /// The record of a solve refined one level up from the one this estimated, whose values
+    /// there are `top`: this record's finest `levels` levels, then `top` (where the strategy
+    /// solves its coarser levels afresh, they are the same: [`crate::solver::point`]'s nested
+    /// chain). The time and where the ladder stopped are this record's.
+    pub fn refined_to(&self, top: LevelValues, levels: usize) -> Self {
+        let skip = self.levels.len().saturating_sub(levels);
+        let mut refined = self.clone();
+        refined.levels = self.levels[skip..].to_vec();
+        refined.levels.push(top);
+        refined
+    }
+
     /// The discretisation error of `output`, in the solver's unit (`None` with fewer than
     /// two levels). Two levels are read at the scheme's order where the ladder left a coarser
     /// level out of the asymptotic range (the heavy contacts, whose levels inside it converge
@@ -431,4 +443,33 @@ fn format_history(h: &[f64]) -> String {
         .map(|r| format!("{r:.2e}"))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(level: u32, mu: f64) -> LevelValues {
+        LevelValues {
+            level,
+            h_central: 1.0,
+            h_min: 0.5,
+            mu_bar_sliding: mu,
+            mu_bar_total: mu,
+        }
+    }
+
+    #[test]
+    fn a_refined_record_reads_the_finest_levels_below_and_the_new_top() {
+        let mut below = OutputErrors::of(vec![at(5, 9.0), at(6, 9.5), at(7, 9.75)], 1.5);
+        below.stopped = Some(LadderStop::NotConverged { level: 4 });
+        let refined = below.refined_to(at(8, 9.875), 2);
+        let levels: Vec<u32> = refined.levels.iter().map(|v| v.level).collect();
+        assert_eq!(levels, [6, 7, 8]);
+        assert_eq!((refined.seconds, refined.stopped), (1.5, below.stopped));
+        // A ladder that kept fewer levels than asked (it stopped at level 6) keeps them all.
+        let short = OutputErrors::of(vec![at(7, 9.75)], 0.5).refined_to(at(8, 9.875), 2);
+        let levels: Vec<u32> = short.levels.iter().map(|v| v.level).collect();
+        assert_eq!(levels, [7, 8]);
+    }
 }

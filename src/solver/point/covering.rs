@@ -3,10 +3,11 @@
 //! error read, and a finer level added where the film closes or the estimate misses the
 //! accuracy target ([`super::AccuracyParams`]), within the refinements it has left.
 //!
-//! A uniform grid ([`super::uniform`]) refines; the nested chain ([`super::chain`]) and the
-//! composite grid ([`super::composite`]) are solved at the level given (their estimate solves
-//! the whole strategy again at coarser levels, and an estimate that misses the target is
-//! reported with the solution).
+//! A uniform grid ([`super::uniform`]) refines by a level added to its hierarchy; the nested
+//! chain ([`super::chain`]) by the whole chain solved one level finer, its estimate reading the
+//! chains the level below read; the composite grid ([`super::composite`]) is solved at the
+//! level given (its estimate solves the whole composite again at coarser levels, and an
+//! estimate that misses the target is reported with the solution).
 
 use super::converge::Tally;
 use super::tau::TauExtrapolated;
