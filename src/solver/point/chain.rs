@@ -5,8 +5,8 @@
 //! the chain; their error is estimated by Richardson over the whole chain at two coarser
 //! levels, whose meshes halve together, so that the surroundings' own error is part of it
 //! (docs/ACCURACY_NOTES.md, "Resolution where the contact needs it"). Where that estimate
-//! misses the accuracy target, the chain is solved again one level finer (Fig. 6's light
-//! contacts at M 12-18, L 28-32: 1.0-1.8 % at level 7, 0.6-0.8 % at level 8).
+//! misses the accuracy target, the chain is solved again, cold, one level finer (no case of the
+//! figures does at level 7; Fig. 6 case 19 asked at level 5 or 6 does).
 
 use super::converge::Tally;
 use super::covering::{self, Covering, Outputs};
@@ -222,13 +222,6 @@ impl Covering for Nested<'_> {
 
     fn may_refine(&self) -> bool {
         self.refinements < self.params.accuracy.refinement_levels && self.level() < MAX_LEVEL
-    }
-
-    /// At every level: the chain at level 8 takes 7-8 s on the light contacts that miss the
-    /// friction target at 7 (docs/ACCURACY_NOTES.md, "The friction rows the rule leaves
-    /// above 1 %"), however its rectangles converged.
-    fn reads_target(&self) -> bool {
-        true
     }
 
     /// The chain's friction and the estimate by the chains at the levels below (those the

@@ -47,10 +47,6 @@ pub(super) trait Covering {
     fn may_refine(&self) -> bool {
         false
     }
-    /// Whether the accuracy target is read at this level.
-    fn reads_target(&self) -> bool {
-        false
-    }
     /// A finer level added and converged: after `outputs` where the estimate missed the
     /// target (the levels it read start the refined level's), without where the film closed.
     /// Called only where [`Covering::may_refine`].
@@ -91,9 +87,7 @@ pub(super) fn run(
         }
         let outputs = covering.outputs(observe)?;
         let missed = match (&accuracy.target, &outputs.errors) {
-            (Some(target), Some(e)) => {
-                covering.reads_target() && !target.met_by(e, problem.groups.m)
-            }
+            (Some(target), Some(e)) => !target.met_by(e, problem.groups.m),
             _ => false,
         };
         if !(missed && covering.may_refine()) {
@@ -144,7 +138,6 @@ mod tests {
         last: u32,
         closed_below: u32,
         missed_below: u32,
-        reads_target: bool,
         /// Each refinement: the level it left and whether outputs came with it.
         refined: Vec<(u32, bool)>,
     }
@@ -156,7 +149,6 @@ mod tests {
                 last,
                 closed_below: 0,
                 missed_below: 0,
-                reads_target: true,
                 refined: Vec::new(),
             }
         }
@@ -253,10 +245,6 @@ mod tests {
             self.level < self.last
         }
 
-        fn reads_target(&self) -> bool {
-            self.reads_target
-        }
-
         fn refine(
             &mut self,
             after: Option<Outputs>,
@@ -316,7 +304,7 @@ mod tests {
     }
 
     #[test]
-    fn a_missed_target_refines_where_it_is_read_and_a_level_is_left() {
+    fn a_missed_target_refines_where_a_level_is_left() {
         let missed = Scripted {
             missed_below: 8,
             ..Scripted::at(7, 8)
@@ -330,12 +318,6 @@ mod tests {
         );
         let met = solve(Scripted::at(7, 8)).unwrap();
         assert_eq!(met.info.level, 7, "met at once: no refinement");
-        let unread = Scripted {
-            missed_below: 8,
-            reads_target: false,
-            ..Scripted::at(7, 8)
-        };
-        assert_eq!(solve(unread).unwrap().info.level, 7);
         let exhausted = Scripted {
             missed_below: 9,
             ..Scripted::at(7, 8)

@@ -5,7 +5,8 @@
 //! ([`super::chain`]) solves a uniform grid on each of its domains, the case-sized one first,
 //! and estimates over whole chains at coarser levels; the composite grid
 //! ([`super::composite`]) solves one on its patch inside rounds that couple the patch with the
-//! whole domain, and estimates over whole composites. Neither refines.
+//! whole domain, and estimates over whole composites. The chain refines by being solved again
+//! one level finer; the composite does not refine.
 
 use super::composite::PatchSet;
 use super::{chain, composite, uniform, Params, PointSolution, Start};

@@ -14,8 +14,8 @@ use crate::solver::output::{Method, Output, OutputErrors, Progress, SolveError};
 use serde::Serialize;
 
 /// The discretisation errors a case's solve refines its grid to meet, relative to each output's own
-/// value, within [`super::AccuracyParams::refinement_levels`], where the level converged by its
-/// cycles: the sliding `mu-bar` the paper's curve is about, and optionally the central film.
+/// value, within [`super::AccuracyParams::refinement_levels`]: the sliding `mu-bar` the paper's
+/// curve is about, and optionally the central film.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct AccuracyTarget {
     /// The sliding `mu-bar`'s largest estimated relative error.
