@@ -16,6 +16,18 @@ use crate::pipeline::sweep::PointSpec;
 use crate::solver::line;
 use crate::solver::output::SolveError;
 use crate::solver::point;
+use crate::solver::point::composite::Patch;
+
+/// A point contact of the study: name, description, sweeps, case, parameters at a level,
+/// the case whose reference it is measured against ([`AccuracyCase`]'s fields).
+type PointEntry<'a> = (
+    &'static str,
+    &'static str,
+    &'static [&'static str],
+    &'a Case,
+    fn(&Problem, u32) -> point::Params,
+    Option<&'static str>,
+);
 
 /// A contact and how the pipeline solves it at a level.
 #[derive(Debug, Clone)]
@@ -70,11 +82,15 @@ impl AccuracyProblem {
 
     /// The domain check of a point contact: solved at `level` with its parameters' domain's
     /// inlet and sides doubled ([`crate::solver::grid::Domain::doubled`]), on the mesh of
-    /// `level - 1` on its own domain; `None` for a line contact.
+    /// `level - 1` on its own domain; `None` for a line contact and a patched design.
     pub fn solve_doubled(&self, level: u32) -> Option<Result<LevelOutputs, SolveError>> {
         match self {
             AccuracyProblem::Point { problem, params } => {
                 let rule = params(problem, level);
+                if rule.patch.is_some() {
+                    // A design is measured against its rule's case, whose domain is checked.
+                    return None;
+                }
                 let doubled = point::Params {
                     domain: rule.domain.doubled(),
                     ..rule
@@ -123,6 +139,10 @@ pub struct AccuracyCase {
     pub level_offset: u32,
     /// The contact.
     pub contact: AccuracyProblem,
+    /// The case of the same contact on the rule's grid whose reference this one's errors are
+    /// measured against, for a design of the grid (the inlet patch: issue 54's probes), so
+    /// that its series compares with that case's; `None` for a case of its own.
+    pub reference_from: Option<&'static str>,
 }
 
 impl AccuracyCase {
@@ -148,6 +168,15 @@ pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
     let mut params = point::Params::for_problem(problem, level);
     params.accuracy.refinement_levels = 0;
     params
+}
+
+/// [`pipeline_params`] on the composite grid with the inlet patch (`repro solve --patch
+/// inlet`): a design of the grid issue 54 measures against the rule's.
+pub fn inlet_patch_params(problem: &Problem, level: u32) -> point::Params {
+    point::Params {
+        patch: Some(Patch::Inlet.set(level)),
+        ..pipeline_params(problem, level)
+    }
 }
 
 /// The line solver's rule ([`line::Params::for_problem`]) without its refinement, for the
@@ -245,33 +274,43 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
     };
     let case23 = table2_case("fig6", "5p4e", 40.0, 1e9, 12.0, 0.005, 6e6)?;
     let case221 = table2_case("fig4", "mineral-oil-a", 100.0, 3e9, 2.0, 0.005, 6e6)?;
-    // (name, description, sweeps, case): every point contact with the figures' parameters.
-    let points: [(&'static str, &'static str, &'static [&'static str], &Case); 7] = [
-        ("light-barus", "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)", &["fig1-3"], &light),
-        ("heavy-barus", "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)", &["fig1-3"], &heavy),
-        ("table4", "Appendix case: mineral oil A, 3 GPa, 40 C, Roelands, Dowson-Higginson, Eyring", &["fig4", "fig5", "fig6"], &table4),
-        ("ellipse-1/5", "Rx/Ry = 1/5, mineral oil A, 3 GPa, 60 C, 12 m/s, S 0.1 %, tau0 4 MPa (Table 3)", &["fig7"], &ellipse),
-        ("light-far-field", "Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa (M 4.76, L 57, far field)", &["fig4", "fig5", "fig6"], &case23),
-        ("m1-l10", "M 1, L 10, S-bar 0.1, Barus, incompressible, Eyring (the light end of the envelope)", &[], &m1),
-        ("heavy-m19205", "Fig. 4 case 221: mineral oil A, 100 C, 3 GPa, 2 m/s, S 0.5 %, tau0 6 MPa (M 19 205)", &["fig4"], &case221),
+    let case150 = table2_case("fig4", "mineral-oil-a", 60.0, 3e9, 7.0, 0.005, 8e6)?;
+    let (rule, inlet) = (pipeline_params, inlet_patch_params);
+    // (name, description, sweeps, case, parameters, reference from): every point contact with
+    // the figures' parameters, then issue 54's probes that are not among them (Fig. 4 case
+    // 150) and the inlet patch's designs of two of them, measured against their rule's.
+    #[rustfmt::skip]
+    let points: [PointEntry; 10] = [
+        ("light-barus", "M 50, L 10, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep)", &["fig1-3"], &light, rule, None),
+        ("heavy-barus", "M 1000, L 15, S-bar 0.1, Barus, incompressible, Eyring (Figs. 1-3 sweep, heaviest corner)", &["fig1-3"], &heavy, rule, None),
+        ("table4", "Appendix case: mineral oil A, 3 GPa, 40 C, Roelands, Dowson-Higginson, Eyring", &["fig4", "fig5", "fig6"], &table4, rule, None),
+        ("ellipse-1/5", "Rx/Ry = 1/5, mineral oil A, 3 GPa, 60 C, 12 m/s, S 0.1 %, tau0 4 MPa (Table 3)", &["fig7"], &ellipse, rule, None),
+        ("light-far-field", "Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa (M 4.76, L 57, far field)", &["fig4", "fig5", "fig6"], &case23, rule, None),
+        ("m1-l10", "M 1, L 10, S-bar 0.1, Barus, incompressible, Eyring (the light end of the envelope)", &[], &m1, rule, None),
+        ("heavy-m19205", "Fig. 4 case 221: mineral oil A, 100 C, 3 GPa, 2 m/s, S 0.5 %, tau0 6 MPa (M 19 205)", &["fig4"], &case221, rule, None),
+        ("case150", "Fig. 4 case 150: mineral oil A, 60 C, 3 GPa, 7 m/s, S 0.5 %, tau0 8 MPa (M 4 326; issue 54's probe)", &[], &case150, rule, None),
+        ("table4-inlet-patch", "the Appendix case with the inlet patch (repro solve --patch inlet), against table4's reference", &[], &table4, inlet, Some("table4")),
+        ("case150-inlet-patch", "Fig. 4 case 150 with the inlet patch (repro solve --patch inlet), against case150's reference", &[], &case150, inlet, Some("case150")),
     ];
     let mut cases = points
         .into_iter()
-        .map(|(name, description, sweeps, case)| {
-            Ok(AccuracyCase {
-                name,
-                description,
-                sweeps,
-                level_offset: 0,
-                contact: AccuracyProblem::Point {
-                    problem: Box::new(
-                        Problem::from_case(case, &lubs)
-                            .map_err(|e| PipelineError::case(format!("accuracy case {name}"), e))?,
-                    ),
-                    params: pipeline_params,
-                },
-            })
-        })
+        .map(
+            |(name, description, sweeps, case, params, reference_from)| {
+                Ok(AccuracyCase {
+                    name,
+                    description,
+                    sweeps,
+                    level_offset: 0,
+                    contact: AccuracyProblem::Point {
+                        problem: Box::new(Problem::from_case(case, &lubs).map_err(|e| {
+                            PipelineError::case(format!("accuracy case {name}"), e)
+                        })?),
+                        params,
+                    },
+                    reference_from,
+                })
+            },
+        )
         .collect::<Result<Vec<_>, PipelineError>>()?;
     if with_line {
         // The heaviest line contact of Table 3 (3 GPa), from cases/fig7.toml.
@@ -292,6 +331,7 @@ pub fn accuracy_cases(with_line: bool) -> Result<Vec<AccuracyCase>, PipelineErro
                 problem: Box::new(problem),
                 params: line_pipeline_params,
             },
+            reference_from: None,
         });
     }
     Ok(cases)
@@ -324,6 +364,9 @@ mod tests {
                 ("light-far-field", table2),
                 ("m1-l10", vec![]),
                 ("heavy-m19205", vec!["fig4"]),
+                ("case150", vec![]),
+                ("table4-inlet-patch", vec![]),
+                ("case150-inlet-patch", vec![]),
                 ("line", vec!["fig7"]),
             ]
         );

@@ -6,7 +6,10 @@
 //! stands for (and so the targets that draw them), and an [`AccuracyProblem`] that knows how
 //! to solve itself at a level. Adding a case
 //! is adding one entry to [`cases::accuracy_cases`]; the rest (errors here, the files in
-//! `files.rs`, the picture in `picture.rs`, the recommended level per target) is shared.
+//! `files.rs`, the picture in `picture.rs`, the recommended level per target) is shared. A
+//! design of the grid (the inlet patch) is a case of the same contact with other parameters,
+//! measured against its rule's case's reference ([`AccuracyCase::reference_from`]), so that
+//! the two series compare on one picture.
 //!
 //! The error estimate. With `X_n` the value at level `n`, `f` the finest converged level and
 //! `p` the order of convergence, `X_R = X_f + (X_f - X_{f-1}) / (2^p - 1)` removes the leading
@@ -56,7 +59,7 @@ pub struct Reference {
     /// Sliding `mu-bar`.
     pub mu_bar: f64,
     /// "observed-order" (three finest levels), "richardson" (second order, two finest
-    /// levels) or "finest".
+    /// levels), "finest", or [`TWIN_REFERENCE`] (a design's: its rule's case's).
     pub kind: &'static str,
     /// Order observed over the three finest levels, film and friction (when three
     /// consecutive finest levels converged and the differences are not zero).
@@ -215,7 +218,7 @@ pub fn run(
     repeats: usize,
     progress: &mut dyn FnMut(&AccuracyCase, &LevelRun),
 ) -> Vec<AccuracyResult> {
-    cases
+    let mut studies: Vec<AccuracyResult> = cases
         .iter()
         .map(|case| {
             let mut runs = Vec::new();
@@ -248,8 +251,25 @@ pub fn run(
                 levels: runs,
             }
         })
-        .collect()
+        .collect();
+    for (i, case) in cases.iter().enumerate() {
+        if let Some(from) = case.reference_from {
+            studies[i].reference = studies
+                .iter()
+                .find(|s| s.name == from)
+                .and_then(|s| s.reference)
+                .map(|r| Reference {
+                    kind: TWIN_REFERENCE,
+                    ..r
+                });
+        }
+    }
+    studies
 }
+
+/// The reference kind of a design measured against its rule's case
+/// ([`AccuracyCase::reference_from`]): that case's reference, whatever its kind.
+pub const TWIN_REFERENCE: &str = "the rule's case";
 
 /// The recommended level of a target.
 #[derive(Debug, Clone, PartialEq)]
