@@ -102,6 +102,15 @@ impl Marker {
     pub fn nth(i: usize) -> Marker {
         Marker::ALL[i % Marker::ALL.len()]
     }
+
+    /// The marker of the `i`-th series of a figure whose series take the colours in their
+    /// order (cycling through ten): shifted by one shape each time the colours start again,
+    /// so that no two of the first 50 series share both colour and shape ([`Marker::nth`]
+    /// repeats both from the eleventh: the accuracy study's line contact drew as its first
+    /// case).
+    pub fn of_series(i: usize) -> Marker {
+        Marker::nth(i + i / style::SERIES_COLORS.len())
+    }
 }
 
 /// A set of data points drawn as markers, optionally joined by a thin line in their order

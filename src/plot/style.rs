@@ -87,3 +87,21 @@ pub(super) fn font(px: f64) -> TextStyle<'static> {
 pub(super) fn drawing<E: std::fmt::Display>(e: E) -> PlotError {
     PlotError::Drawing(e.to_string())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::SERIES_COLORS;
+    use crate::plot::Marker;
+
+    #[test]
+    fn no_two_of_fifty_series_share_colour_and_marker() {
+        let looks: Vec<(usize, Marker)> = (0..50)
+            .map(|i| (i % SERIES_COLORS.len(), Marker::of_series(i)))
+            .collect();
+        for (i, a) in looks.iter().enumerate() {
+            assert!(!looks[..i].contains(a), "series {i} looks like an earlier one");
+        }
+        // The eleventh series (the accuracy study's line contact) is not the first's.
+        assert_ne!(Marker::of_series(10), Marker::of_series(0));
+    }
+}

@@ -28,7 +28,7 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
                     format!("{} ({} contact)", s.name, s.kind)
                 },
                 points,
-                marker: Marker::nth(i),
+                marker: Marker::of_series(i),
                 joined: true,
                 point_labels,
                 y_errors: Vec::new(),

@@ -250,10 +250,9 @@ pub struct AccuracyParams {
     /// [`AccuracyParams::refinement_levels`] ([`super::AccuracyTarget`]; needs
     /// [`AccuracyParams::error_levels`]).
     /// Default none (studies of the numerics solve the level they are given); the rule sets 1 %
-    /// in friction ([`super::AccuracyTarget::FRICTION`]), which takes 448 of the paper's 1 369
-    /// solves to level 8 and 929 of the 980 rows of Figs. 1 and 3-7 within 1 %, at 1.43-1.50
-    /// times its CPU time and 1.42-1.49 times its wall time, two sessions' measurements
-    /// (docs/ACCURACY_NOTES.md, "Refinement to a target").
+    /// in friction ([`super::AccuracyTarget::FRICTION`]): at `point-35` 334 of the paper's 1 369
+    /// solves end on level 8 and 972 of the 989 rows of Figs. 1 and 3-7 are within 1 %
+    /// (docs/ACCURACY_NOTES.md, "Refinement to a target", has what it cost).
     pub target: Option<super::AccuracyTarget>,
     /// Finer levels the solver may add, one at a time, while the converged film is not
     /// positive (friction is never computed on a closed gap) or the outputs' estimated error
