@@ -99,7 +99,10 @@ mod tests {
             .map(|i| (i % SERIES_COLORS.len(), Marker::of_series(i)))
             .collect();
         for (i, a) in looks.iter().enumerate() {
-            assert!(!looks[..i].contains(a), "series {i} looks like an earlier one");
+            assert!(
+                !looks[..i].contains(a),
+                "series {i} looks like an earlier one"
+            );
         }
         // The eleventh series (the accuracy study's line contact) is not the first's.
         assert_ne!(Marker::of_series(10), Marker::of_series(0));
