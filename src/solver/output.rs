@@ -193,12 +193,13 @@ impl OutputErrors {
     /// there are `top`: this record's finest `levels` levels, then `top` (where the strategy
     /// solves its coarser levels afresh, they are the same: [`crate::solver::point`]'s nested
     /// chain). The time and where the ladder stopped are this record's.
-    pub fn refined_to(&self, top: LevelValues, levels: usize) -> Self {
-        let skip = self.levels.len().saturating_sub(levels);
-        let mut refined = self.clone();
-        refined.levels = self.levels[skip..].to_vec();
-        refined.levels.push(top);
-        refined
+    pub fn refined_to(&self, top: LevelValues, levels: u32) -> Self {
+        let skip = self.levels.len().saturating_sub(levels as usize);
+        OutputErrors {
+            levels: self.levels[skip..].iter().copied().chain([top]).collect(),
+            seconds: self.seconds,
+            stopped: self.stopped,
+        }
     }
 
     /// The discretisation error of `output`, in the solver's unit (`None` with fewer than

@@ -14,7 +14,7 @@ use super::ladder;
 use super::nested::Surround;
 pub use super::rectangles::{rectangles, snap, CORE, SHRINK};
 use super::uniform::{self, observing};
-use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR, MAX_LEVEL};
+use super::{Params, PointSolution, Start, LOADED_FILM_FACTOR};
 use crate::physics::case::Problem;
 use crate::solver::grid::{Domain, Grid};
 use crate::solver::output::{
@@ -221,7 +221,9 @@ impl Covering for Nested<'_> {
     }
 
     fn may_refine(&self) -> bool {
-        self.refinements < self.params.accuracy.refinement_levels && self.level() < MAX_LEVEL
+        self.params
+            .accuracy
+            .may_refine(self.refinements, self.level())
     }
 
     /// The chain's friction and the estimate by the chains at the levels below (those the
@@ -233,7 +235,7 @@ impl Covering for Nested<'_> {
         let levels = self.params.accuracy.error_levels;
         let top = self.chain.level_values(self.problem);
         let errors = (levels > 0).then(|| match &self.read {
-            Some(below) => below.refined_to(top, levels as usize),
+            Some(below) => below.refined_to(top, levels),
             None => chain_errors(self.problem, &self.params, top, levels),
         });
         Ok(Outputs {

@@ -271,6 +271,15 @@ pub struct AccuracyParams {
     pub tau_extrapolation: bool,
 }
 
+impl AccuracyParams {
+    /// Whether a solve on `level` that has added `refinements` finer levels may add one more:
+    /// within [`AccuracyParams::refinement_levels`] and [`super::MAX_LEVEL`] (the uniform grid's
+    /// and the nested chain's rule alike).
+    pub(super) fn may_refine(&self, refinements: u32, level: u32) -> bool {
+        refinements < self.refinement_levels && level < super::MAX_LEVEL
+    }
+}
+
 impl Default for AccuracyParams {
     fn default() -> Self {
         AccuracyParams {

@@ -166,7 +166,9 @@ impl Covering for Uniform<'_> {
     }
 
     fn may_refine(&self) -> bool {
-        self.refinements < self.params.accuracy.refinement_levels && self.level() < MAX_LEVEL
+        self.params
+            .accuracy
+            .may_refine(self.refinements, self.level())
     }
 
     /// The friction, the tau-extrapolated outputs (before the ladder, which makes the coarser
