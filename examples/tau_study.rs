@@ -42,6 +42,7 @@ fn main() {
                     h: Vec::new(),
                     film: s.film,
                     friction: s.friction,
+                    coarse_cycles: 0,
                 });
                 serde_json::json!({
                     "case": name,

@@ -129,6 +129,7 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
         params.accuracy.error_levels = 0;
         params
     };
+
     let fine = point::solve(&p, &fine_params, None).unwrap_or_else(|e| panic!("{what} L9: {e}"));
     let e = s
         .errors
@@ -139,13 +140,17 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
         "{what}: at least two levels, {:?}",
         e.levels
     );
+    // The level's own outputs are held against level 9's; a tau-extrapolated central film
+    // (the rule's on one grid, `OutputErrors::tau_central`), whose error is about level 9's
+    // own (median 0.30 % at level 7 against 0.13 %, docs/ACCURACY_NOTES.md,
+    // "Tau-extrapolation, measured"), against level 9's tau-extrapolated one (the rule gives
+    // it beside a solve without a ladder), a tenth of that.
+    let fine_central = match (e.tau_central, &fine.tau) {
+        (Some(_), Some(tau)) => tau.film.h_central,
+        _ => fine.film.h_central,
+    };
     let outputs = [
-        (
-            "Hc",
-            Output::HCentral,
-            s.film.h_central,
-            fine.film.h_central,
-        ),
+        ("Hc", Output::HCentral, s.film.h_central, fine_central),
         ("Hmin", Output::HMin, s.film.h_min, fine.film.h_min),
         (
             "mu-bar",

@@ -3,29 +3,45 @@
 
 use crate::point_contact::{dimensionless, problem, rel};
 use repro::physics::rheology::Rheology;
+use repro::solver::output::Output;
 use repro::solver::point::{solve, Params};
 
 #[test]
-fn tau_extrapolation_leaves_the_solve_as_it_was() {
-    // A measurement beside the solve: the solve's own outputs, its error estimate (whose
-    // ladder runs after it, on the coarser levels it used) and its grid are bit for bit those
-    // of the solve without it. M 500, L 5, S-bar 1 at level 6 with the rule's ladder.
+fn tau_extrapolation_moves_only_the_central_film_the_solve_reports() {
+    // The rule reports the central film tau-extrapolated; the rest of the solve (its pressure,
+    // minimum film, friction, the levels its estimate reads and its grid) is bit for bit the
+    // solve's without it, and the central film's estimate is the levels' read at the
+    // extrapolated value. M 500, L 5, S-bar 1 at level 6 with the rule's ladder.
     let p = problem(&dimensionless(500.0, 5.0, 1.0, Rheology::Eyring));
-    let plain = Params::for_problem(&p, 6);
-    let mut with = plain.clone();
-    with.accuracy.tau_extrapolation = true;
+    let with = Params::for_problem(&p, 6);
+    assert!(with.accuracy.tau_extrapolation, "the rule's");
+    let mut plain = with.clone();
+    plain.accuracy.tau_extrapolation = false;
     let (a, b) = (
         solve(&p, &plain, None).unwrap(),
         solve(&p, &with, None).unwrap(),
     );
-    assert!(a.tau.is_none() && b.tau.is_some());
+    let tau = b.tau.as_ref().expect("extrapolated");
+    assert!(a.tau.is_none());
     assert_eq!(a.p, b.p);
-    assert_eq!(a.film, b.film);
+    assert_eq!(a.film.h_min, b.film.h_min);
+    assert_eq!(b.film.h_central, tau.film.h_central);
+    assert_ne!(a.film.h_central, b.film.h_central);
     assert_eq!(a.friction, b.friction);
-    let levels =
-        |s: &repro::solver::point::PointSolution| s.errors.as_ref().map(|e| e.levels.clone());
-    assert_eq!(levels(&a), levels(&b));
     assert_eq!(a.info.level, b.info.level);
+    let (ea, eb) = (a.errors.unwrap(), b.errors.unwrap());
+    assert_eq!(ea.levels, eb.levels);
+    assert_eq!(eb.tau_central, Some(tau.film.h_central));
+    let levels = ea.estimate(Output::HCentral).unwrap();
+    assert_eq!(levels, eb.level_estimate(Output::HCentral).unwrap());
+    assert_eq!(
+        eb.estimate(Output::HCentral).unwrap(),
+        levels.of_value(tau.film.h_central)
+    );
+    assert_eq!(
+        ea.estimate(Output::MuBarSliding),
+        eb.estimate(Output::MuBarSliding)
+    );
 }
 
 #[test]

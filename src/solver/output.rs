@@ -102,6 +102,12 @@ pub struct OutputErrors {
     /// levels (`None` where it did not).
     #[serde(default)]
     pub stopped: Option<LadderStop>,
+    /// The finest level's central film tau-extrapolated, where the solve computed it
+    /// ([`crate::solver::point::AccuracyParams::tau_extrapolation`]): the central film the
+    /// solution reports, estimated by its distance to the levels' extrapolation
+    /// ([`ErrorEstimate::of_value`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub tau_central: Option<f64>,
 }
 
 /// Why a coarser level of the error estimate was not read.
@@ -186,6 +192,7 @@ impl OutputErrors {
             levels,
             seconds,
             stopped: None,
+            tau_central: None,
         }
     }
 
@@ -199,6 +206,7 @@ impl OutputErrors {
             levels: self.levels[skip..].iter().copied().chain([top]).collect(),
             seconds: self.seconds,
             stopped: self.stopped,
+            tau_central: None,
         }
     }
 
@@ -206,7 +214,28 @@ impl OutputErrors {
     /// two levels). Two levels are read at the scheme's order where the ladder left a coarser
     /// level out of the asymptotic range (the heavy contacts, whose levels inside it converge
     /// at 1.9-2.4), else at first order ([`crate::solver::richardson`]).
+    /// The central film's is that of [`OutputErrors::tau_central`] where the solve gave one
+    /// ([`OutputErrors::value`]).
     pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
+        let levels = self.level_estimate(output)?;
+        Some(match (output, self.tau_central) {
+            (Output::HCentral, Some(tau)) => levels.of_value(tau),
+            _ => levels,
+        })
+    }
+
+    /// The value of `output` the solution reports: the finest level's, but the central film
+    /// tau-extrapolated where the solve gave one.
+    pub fn value(&self, output: Output) -> f64 {
+        match (output, self.tau_central) {
+            (Output::HCentral, Some(tau)) => tau,
+            _ => self.levels[self.levels.len() - 1].get(output),
+        }
+    }
+
+    /// The discretisation error of the finest level's `output` from the levels alone, as
+    /// [`OutputErrors::estimate`] reads it where no tau-extrapolation was given.
+    pub fn level_estimate(&self, output: Output) -> Option<ErrorEstimate> {
         let two_level_order = match self.stopped {
             Some(stop) if stop.is_outside() => SCHEME_ORDER,
             _ => FIRST_ORDER,

@@ -14,12 +14,13 @@ use super::tau::TauExtrapolated;
 use super::{AccuracyParams, CoarseSolution, PointSolution, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::physics::film::hc_nijenbanning;
-use crate::solver::output::{Film, Friction, OutputErrors, Progress, SolveError};
+use crate::solver::output::{Film, Friction, Output, OutputErrors, Progress, SolveError};
 
 /// A converged covering's outputs.
 pub(super) struct Outputs {
     pub(super) friction: Friction,
-    /// The tau-extrapolated outputs, where asked for ([`AccuracyParams::tau_extrapolation`]).
+    /// The tau-extrapolated outputs of the level the solve ends on, where asked for
+    /// ([`AccuracyParams::tau_extrapolation`]; [`Covering::tau_extrapolated`]).
     pub(super) tau: Option<TauExtrapolated>,
     /// The discretisation error, where asked for ([`AccuracyParams::error_levels`]).
     pub(super) errors: Option<OutputErrors>,
@@ -46,6 +47,11 @@ pub(super) trait Covering {
     /// Whether a finer level may still be added.
     fn may_refine(&self) -> bool {
         false
+    }
+    /// The present level's outputs tau-extrapolated, where the parameters ask for them and
+    /// the covering gives them: read once the solve ends on this level.
+    fn tau_extrapolated(&mut self) -> Option<TauExtrapolated> {
+        None
     }
     /// A finer level added and converged: after `outputs` where the estimate missed the
     /// target (the levels it read start the refined level's), without where the film closed.
@@ -91,9 +97,43 @@ pub(super) fn run(
             _ => false,
         };
         if !(missed && covering.may_refine()) {
+            let outputs = Outputs {
+                tau: covering.tau_extrapolated(),
+                ..outputs
+            };
+            let outputs = tau_central(outputs);
+            let film = reported_film(film, &outputs);
             return Ok(covering.into_solution(film, outputs));
         }
         covering.refine(Some(outputs), observe)?;
+    }
+}
+
+/// `outputs` with the tau-extrapolated central film in their estimate's record, where both
+/// were computed and the levels estimate it: the central film reported
+/// ([`OutputErrors::tau_central`]).
+fn tau_central(mut outputs: Outputs) -> Outputs {
+    if let (Some(tau), Some(errors)) = (&outputs.tau, &mut outputs.errors) {
+        if errors.level_estimate(Output::HCentral).is_some() {
+            errors.tau_central = Some(tau.film.h_central);
+        }
+    }
+    outputs
+}
+
+/// The film the solution reports: the level's `film`, with the tau-extrapolated central film
+/// where [`tau_central`] put it in the estimate.
+fn reported_film(film: Film, outputs: &Outputs) -> Film {
+    match (
+        &outputs.tau,
+        outputs.errors.as_ref().and_then(|e| e.tau_central),
+    ) {
+        (Some(tau), Some(_)) => Film {
+            h_central: tau.film.h_central,
+            hc_moes: tau.film.hc_moes,
+            ..film
+        },
+        _ => film,
     }
 }
 

@@ -253,5 +253,6 @@ pub(super) fn by_solving_again(
         levels,
         seconds: clock.elapsed().as_secs_f64(),
         stopped,
+        tau_central: None,
     }
 }

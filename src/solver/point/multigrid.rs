@@ -184,12 +184,18 @@ impl Hierarchy {
     }
 
     /// Tau-extrapolation of the converged top `k` ([`super::tau`]): its FAS coarse problem
-    /// with the relative truncation error scaled by `factor`, solved by `coarse_cycles`
-    /// cycles, its change added to the top without relaxing after it.
+    /// with the relative truncation error scaled by `factor`, solved by cycles until `done`
+    /// says so (it sees the coarse level after each cycle, its film refreshed), its change
+    /// added to the top without relaxing after it.
     /// The coarser levels and the force balance's adaptation are put back as they were (the
     /// extrapolation works on fresh coarse levels), so that what the solve does next with
     /// them (its error ladder) is what it would have done without it.
-    pub fn tau_extrapolate(&mut self, k: usize, factor: f64, coarse_cycles: usize) {
+    pub fn tau_extrapolate(
+        &mut self,
+        k: usize,
+        factor: f64,
+        mut done: impl FnMut(&LevelFields) -> bool,
+    ) {
         let model = self.model;
         let fresh: Vec<LevelFields> = self.levels[..k]
             .iter()
@@ -205,8 +211,12 @@ impl Hierarchy {
             coarsen(fine, &mut lo[k - 1], &model, self.delta);
             scale_tau(fine, &mut lo[k - 1], &natural, factor);
         }
-        for _ in 0..coarse_cycles {
+        loop {
             self.cycle(k - 1);
+            self.levels[k - 1].refresh(self.delta, &model);
+            if done(&self.levels[k - 1]) {
+                break;
+            }
         }
         {
             let (lo, hi) = self.levels.split_at_mut(k);
@@ -226,6 +236,17 @@ impl Hierarchy {
     /// Makes level `k` the top of the hierarchy: its own equations, not a coarse-grid
     /// problem, with the far field of the present film constant on its boundary.
     pub fn make_top(&mut self, k: usize) {
+        self.set_half_points(k);
+        let hrhs = self.natural_film_rhs(&self.levels[k].grid);
+        let level = &mut self.levels[k];
+        level.hrhs = hrhs;
+        level.f.iter_mut().for_each(|v| *v = 0.0);
+        level.set_far_field(&self.far, self.delta);
+    }
+
+    /// The half points' means of a hierarchy topped by level `k`: the model's on `k`, the
+    /// arithmetic mean on the levels below (and above, which are not part of its cycles).
+    pub fn set_half_points(&mut self, k: usize) {
         let model = self.model;
         for (i, level) in self.levels.iter_mut().enumerate() {
             let mean = if i == k {
@@ -238,11 +259,6 @@ impl Hierarchy {
                 level.invalidate();
             }
         }
-        let hrhs = self.natural_film_rhs(&self.levels[k].grid);
-        let level = &mut self.levels[k];
-        level.hrhs = hrhs;
-        level.f.iter_mut().for_each(|v| *v = 0.0);
-        level.set_far_field(&self.far, self.delta);
     }
 
     /// The film equation's right-hand side of a top level on `grid`: the geometry and the far

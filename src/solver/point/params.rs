@@ -265,9 +265,13 @@ pub struct AccuracyParams {
     /// paper itself reports a film an order of magnitude too thin.
     pub require_positive_film: bool,
     /// Also give the final level's outputs tau-extrapolated ([`super::TauExtrapolated`],
-    /// [`PointSolution::tau`](super::PointSolution::tau)): a measurement beside the solve,
-    /// which its own outputs, estimate and refinement do not read. Default false. On a chain of
-    /// nested domains it is the innermost domain's; the composite grid gives none.
+    /// [`PointSolution::tau`](super::PointSolution::tau)). Where the ladder estimates the
+    /// central film ([`AccuracyParams::error_levels`]), the solution reports the extrapolated
+    /// central film, estimated by its distance to the levels' extrapolation
+    /// ([`OutputErrors::tau_central`](crate::solver::output::OutputErrors::tau_central)); the
+    /// other outputs and the refinement are the level's. Default false; the rule's true
+    /// (docs/ACCURACY_NOTES.md, "The central film tau-extrapolated"). The uniform grid gives
+    /// it; the nested chain and the composite grid give none.
     pub tau_extrapolation: bool,
 }
 
@@ -298,7 +302,8 @@ const KRYLOV_RESTART: usize = 60;
 
 impl Params {
     /// These parameters solving their level alone, on one grid: no nested domains, no patch,
-    /// no error estimate, no refinement (nor its target) and no film check. The composite
+    /// no error estimate, no refinement (nor its target), no film check and no
+    /// tau-extrapolation. The composite
     /// grid's levels, and the studies that compare it with uniform levels.
     pub fn level_alone(mut self) -> Self {
         self.nested = false;
@@ -307,6 +312,7 @@ impl Params {
         self.accuracy.target = None;
         self.accuracy.refinement_levels = 0;
         self.accuracy.require_positive_film = false;
+        self.accuracy.tau_extrapolation = false;
         self
     }
 
@@ -349,6 +355,7 @@ impl Params {
             accuracy: AccuracyParams {
                 error_levels: ERROR_LEVELS,
                 target: Some(super::AccuracyTarget::FRICTION),
+                tau_extrapolation: true,
                 ..AccuracyParams::default()
             },
             ..Params::default()

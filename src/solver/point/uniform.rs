@@ -23,6 +23,7 @@ use super::level::LOAD;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::newton::HandedFactor;
+use super::tau::TauExtrapolated;
 use super::{
     cold, friction, ladder, refine, tau, warm, CoarseSolution, Params, PointSolution, Start,
     MAX_LEVEL, MIN_LEVEL,
@@ -171,9 +172,8 @@ impl Covering for Uniform<'_> {
             .may_refine(self.refinements, self.level())
     }
 
-    /// The friction, the tau-extrapolated outputs (before the ladder, which makes the coarser
-    /// levels tops of their own) and the ladder's estimate, its levels converged the way the
-    /// top one finally converged.
+    /// The friction and the ladder's estimate, its levels converged the way the top one
+    /// finally converged.
     fn outputs(&mut self, observe: &mut dyn FnMut(&Progress)) -> Result<Outputs, SolveError> {
         let (mg, params) = (&mut self.mg, &self.params);
         let friction = friction::friction(
@@ -189,11 +189,6 @@ impl Covering for Uniform<'_> {
                 residual_history: self.tally.history.clone(),
             });
         }
-        let scale = self.problem.groups.moes_film_scale;
-        let tau = params
-            .accuracy
-            .tau_extrapolation
-            .then(|| tau::extrapolated_outputs(mg, params, scale));
         let used = if self.newton_used {
             Method::NewtonKrylov
         } else {
@@ -208,10 +203,28 @@ impl Covering for Uniform<'_> {
         };
         Ok(Outputs {
             friction,
-            tau,
+            tau: None,
             errors,
             coarser,
         })
+    }
+
+    /// After the ladder, which made the coarser levels tops of their own and the top a coarse
+    /// level of theirs in its half points' means (the rest of the top's equations it left
+    /// alone): those means set back, then extrapolated.
+    fn tau_extrapolated(&mut self) -> Option<TauExtrapolated> {
+        if !self.params.accuracy.tau_extrapolation {
+            return None;
+        }
+        let top = self.mg.levels.len() - 1;
+        if top == 0 {
+            // A grid alone in its hierarchy has no coarse problem to extrapolate with.
+            return None;
+        }
+        self.mg.set_half_points(top);
+        self.mg.refresh(top);
+        let scale = self.problem.groups.moes_film_scale;
+        Some(tau::extrapolated_outputs(&mut self.mg, &self.params, scale))
     }
 
     fn refine(
