@@ -30,8 +30,8 @@ pub fn present_revisions() -> [String; 2] {
 }
 
 /// The cache key of a case at the given solver parameters: the case, the parameters a target
-/// can set (level, domain, rolling friction, the film check, and the edge and friction region
-/// where they are not the rule's), the solver revision, which is
+/// can set (level, domain, rolling friction, the film check, and the edge, friction region
+/// and central film where they are not the rule's), the solver revision, which is
 /// raised whenever a default parameter or the numerics change, the thermal post-process's
 /// inputs and revision, and the key of the base it starts from
 /// ([`super::base::base_of`]), whose solution is part of its arithmetic.
@@ -59,6 +59,13 @@ pub fn case_key(case: &Case, params: &Params, base_key: Option<&str>) -> String 
         (true, None) => key_of(&key),
         (false, None) => key_of(&(key, setup(params))),
         (_, Some(target)) => key_of(&(key, setup(params), target)),
+    };
+    // A solve that reports its level's own central film, not the rule's tau-extrapolated one
+    // (Table 4's levels): the rule's key, marked.
+    let plain = if params.accuracy.tau_extrapolation {
+        plain
+    } else {
+        key_of(&(plain, "the level's central film"))
     };
     // A composite grid's patch, where one is set: the key of the grid without it, and it.
     match &params.patch {

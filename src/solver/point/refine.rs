@@ -57,7 +57,7 @@ impl AccuracyTarget {
     /// `mu-bar` (an output without an estimate misses it).
     pub fn met_by(&self, errors: &OutputErrors, m: f64) -> bool {
         let within = |output: Output, bound: f64| {
-            let value = errors.levels.last().map(|v| v.get(output));
+            let value = (!errors.levels.is_empty()).then(|| errors.value(output));
             let floor = match output {
                 Output::MuBarSliding | Output::MuBarTotal => Self::MU_BAR_NEAR_ZERO,
                 Output::HCentral | Output::HMin => 0.0,
@@ -67,14 +67,17 @@ impl AccuracyTarget {
                 _ => false,
             }
         };
-        let film = match self.h_central {
+        let film = match self.h_central_bound(m) {
             None => true,
-            Some((light, heavy)) => within(
-                Output::HCentral,
-                if m >= Self::HEAVY_M { heavy } else { light },
-            ),
+            Some(bound) => within(Output::HCentral, bound),
         };
         within(Output::MuBarSliding, self.mu_bar_sliding) && film
+    }
+
+    /// The central film's bound at Moes load `m`, where the target sets one.
+    pub fn h_central_bound(&self, m: f64) -> Option<f64> {
+        self.h_central
+            .map(|(light, heavy)| if m >= Self::HEAVY_M { heavy } else { light })
     }
 }
 
