@@ -102,10 +102,8 @@ pub struct OutputErrors {
     /// levels (`None` where it did not).
     #[serde(default)]
     pub stopped: Option<LadderStop>,
-    /// The finest level's central film tau-extrapolated, where the solve computed it
-    /// ([`crate::solver::point::AccuracyParams::tau_extrapolation`]): the central film the
-    /// solution reports, estimated by its distance to the levels' extrapolation
-    /// ([`ErrorEstimate::of_value`]).
+    /// The finest level's central film tau-extrapolated, where the solve reports it
+    /// ([`crate::solver::point::AccuracyParams::tau_extrapolation`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tau_central: Option<f64>,
 }
@@ -210,12 +208,8 @@ impl OutputErrors {
         }
     }
 
-    /// The discretisation error of `output`, in the solver's unit (`None` with fewer than
-    /// two levels). Two levels are read at the scheme's order where the ladder left a coarser
-    /// level out of the asymptotic range (the heavy contacts, whose levels inside it converge
-    /// at 1.9-2.4), else at first order ([`crate::solver::richardson`]).
-    /// The central film's is that of [`OutputErrors::tau_central`] where the solve gave one
-    /// ([`OutputErrors::value`]).
+    /// The discretisation error of the reported `output` ([`OutputErrors::value`]): the
+    /// levels' ([`OutputErrors::level_estimate`]), read at [`OutputErrors::tau_central`] if given.
     pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
         let levels = self.level_estimate(output)?;
         Some(match (output, self.tau_central) {
@@ -224,8 +218,7 @@ impl OutputErrors {
         })
     }
 
-    /// The value of `output` the solution reports: the finest level's, but the central film
-    /// tau-extrapolated where the solve gave one.
+    /// The reported `output`: the finest level's, the central film tau-extrapolated if given.
     pub fn value(&self, output: Output) -> f64 {
         match (output, self.tau_central) {
             (Output::HCentral, Some(tau)) => tau,
@@ -233,8 +226,10 @@ impl OutputErrors {
         }
     }
 
-    /// The discretisation error of the finest level's `output` from the levels alone, as
-    /// [`OutputErrors::estimate`] reads it where no tau-extrapolation was given.
+    /// The discretisation error of the finest level's `output` (`None` with fewer than two
+    /// levels). Two levels are read at the scheme's order where the ladder left a coarser
+    /// level out of the asymptotic range (the heavy contacts, whose levels inside it converge
+    /// at 1.9-2.4), else at first order ([`crate::solver::richardson`]).
     pub fn level_estimate(&self, output: Output) -> Option<ErrorEstimate> {
         let two_level_order = match self.stopped {
             Some(stop) if stop.is_outside() => SCHEME_ORDER,
