@@ -93,7 +93,7 @@ impl ErrorEstimate {
     /// levels alternating or collapsing), its extrapolation is no better than a level, and
     /// the estimate is at least the bound.
     pub fn of_value(&self, value: f64) -> ErrorEstimate {
-        let distance = SAFETY * (value - self.extrapolated).abs();
+        let distance = 2.0 * (value - self.extrapolated).abs();
         let error = if self.levels > 2 && !self.trusted() {
             distance.max(self.error)
         } else {
