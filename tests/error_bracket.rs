@@ -19,14 +19,14 @@ use repro::solver::point::{self, Params, PointSolution};
 /// their film).
 const OUTPUTS: [(Output, &str); 2] = [(Output::HCentral, "Hc"), (Output::MuBarSliding, "mu")];
 
-/// Each output's estimated error on the finest level of `errors` over its distance to
-/// `finer` (the same outputs one level finer).
+/// Each reported output's estimated error ([`OutputErrors::value`], the central film
+/// tau-extrapolated where the solve reports it so) over its distance to `finer` (the same
+/// outputs one level finer, as that solve reports them).
 fn ratios(errors: &OutputErrors, finer: [f64; 2]) -> [f64; 2] {
-    let finest = errors.levels[errors.levels.len() - 1];
     let mut out = [0.0; 2];
     for (k, (o, _)) in OUTPUTS.iter().enumerate() {
         let e = errors.estimate(*o).expect("estimated");
-        out[k] = e.error / (finest.get(*o) - finer[k]).abs();
+        out[k] = e.error / (errors.value(*o) - finer[k]).abs();
     }
     out
 }
