@@ -66,7 +66,7 @@ class Solution:
     are 1-D and ``Y`` is None. ``tau_m`` is the mean shear stress tau_m / tau0 on the same
     grid, the integrand of Eq. (8) (Eq. 4 for Eyring at the Couette argument
     N S eta_bar(P) / H): its sum over the pressurised interior nodes of the loaded film
-    (H <= 4 h_central) times ``hx * hy / (2 pi / 3)`` is ``mu_bar_sliding`` (a line
+    (H <= 4 h_central_grid) times ``hx * hy / (2 pi / 3)`` is ``mu_bar_sliding`` (a line
     contact's: over the interior nodes with P > 0, divided by their sum of P). It is 0 where
     P <= 0, as Eq. (8) counts it: the cavitation condition does not say how much of the
     ruptured gap there is lubricant.
@@ -106,6 +106,13 @@ class Solution:
         self.level: Optional[int] = d.get("level")
         self.thermal: Optional[Dict[str, Any]] = d.get("thermal")
         self.errors: Optional[Dict[str, Any]] = d.get("discretisation_error")
+        # The grid's own central film, H at X = Y = 0: `h_central` is it tau-extrapolated
+        # where the solve extrapolated it (the finest rung of the error ladder is the grid's).
+        tau = (self.errors or {}).get("tau_central")
+        rungs = (self.errors or {}).get("levels") or []
+        self.h_central_grid: float = (
+            rungs[-1]["h_central"] if tau is not None and rungs else self.h_central
+        )
 
     def as_dict(self) -> Dict[str, Any]:
         """The object of ``repro solve --json`` (a fresh copy)."""

@@ -81,9 +81,13 @@ def test_point_fields_have_the_grid_shape_and_carry_the_load():
     # order's rounding.
     assert abs(load / (2 * math.pi / 3) - 1) <= s.as_dict()["load_error"] + 1e-9
     assert s.as_dict()["load_error"] < 1e-5
-    # The central film of the report is the field's value at X = Y = 0.
+    # The grid's central film is the field's value at X = Y = 0. The report's is that one,
+    # or where level 6's own estimate misses the 2 % bound (here: 1.74e-2 / 0.479, order
+    # assumed), the film tau-extrapolated, which is not a value of the field.
     j, i = np.unravel_index(np.argmin(s.X**2 + s.Y**2), s.X.shape)
-    assert s.H[j, i] == s.h_central
+    assert s.H[j, i] == s.h_central_grid
+    tau = s.errors["tau_central"]
+    assert tau is not None and s.h_central == tau != s.h_central_grid
 
 
 def test_line_fields_are_one_dimensional():
@@ -108,10 +112,11 @@ def test_mean_shear_stress_sums_to_the_sliding_friction(inputs):
     assert "nested" not in s.as_dict()  # nested domains add friction outside the grid
     assert s.tau_m.shape == s.P.shape
     # Eq. (8) as friction.rs has it: the interior nodes of the loaded film, P > 0 and
-    # H <= 4 H_c, over the applied load 2 pi / 3 in units of the cell hx * hy.
+    # H <= 4 H_c with the grid's own H_c (not the tau-extrapolated report), over the applied
+    # load 2 pi / 3 in units of the cell hx * hy.
     inner = (slice(1, -1), slice(1, -1))
     p, h, tau = s.P[inner], s.H[inner], s.tau_m[inner]
-    loaded = (p > 0) & (h <= 4.0 * s.h_central)
+    loaded = (p > 0) & (h <= 4.0 * s.h_central_grid)
     mu = tau[loaded].sum() / (2 * math.pi / 3 / (s.hx * s.hy))
     assert abs(mu / s.mu_bar_sliding - 1) <= SUM_ROUNDING
     # 0 where cavitated, an Eyring stress asinh(x) > 0 wherever pressurised.
