@@ -27,6 +27,8 @@ fn tau_extrapolation_moves_only_the_central_film_the_solve_reports() {
     assert_eq!(a.film.h_min, b.film.h_min);
     assert_eq!(b.film.h_central, tau.film.h_central);
     assert_ne!(a.film.h_central, b.film.h_central);
+    assert_eq!(b.grid_h_central(), a.film.h_central, "the grid's own film");
+    assert_eq!(a.grid_h_central(), a.film.h_central);
     assert_eq!(a.friction, b.friction);
     assert_eq!(a.info.level, b.info.level);
     let (ea, eb) = (a.errors.unwrap(), b.errors.unwrap());

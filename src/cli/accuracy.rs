@@ -40,6 +40,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
             accuracy::files::recommendations_csv(&recs),
         ),
         ("accuracy.svg", accuracy::picture::svg(&studies)?),
+        ("accuracy_film.svg", accuracy::picture::film_svg(&studies)?),
     ];
     for (name, text) in &files {
         let path = args.out.join(name);

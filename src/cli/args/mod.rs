@@ -61,7 +61,9 @@ pub enum Command {
     /// `make snapshots` runs).
     Check(CheckArgs),
     /// What accuracy costs: representative cases at levels 4-8, error against a Richardson
-    /// extrapolation and wall time (figures/accuracy.csv, accuracy.svg, accuracy_levels.csv).
+    /// extrapolation of the grids' own values and wall time (figures/accuracy.csv,
+    /// accuracy.svg for the friction, accuracy_film.svg for the central film as reported and
+    /// the grid's own, accuracy_levels.csv).
     Accuracy(AccuracyArgs),
     /// List the targets.
     List,

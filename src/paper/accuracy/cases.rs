@@ -51,8 +51,12 @@ pub enum AccuracyProblem {
 /// What one solve at one level gave.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LevelOutputs {
-    /// Central film in the solver's unit (`H = h/c` for the point contact).
+    /// Central film in the solver's unit (`H = h/c` for the point contact), as the rule
+    /// reports it: tau-extrapolated where the level's own estimate misses the film bound.
     pub h_central: f64,
+    /// The grid's own central film ([`point::PointSolution::grid_h_central`]): the uniform
+    /// level's, whose convergence the reference reads.
+    pub h_central_grid: f64,
     /// Sliding reduced friction.
     pub mu_bar: f64,
     /// Finest-level cycles.
@@ -66,6 +70,7 @@ impl AccuracyProblem {
             AccuracyProblem::Point { problem, params } => {
                 point::solve(problem, &params(problem, level), None).map(|s| LevelOutputs {
                     h_central: s.film.h_central,
+                    h_central_grid: s.grid_h_central(),
                     mu_bar: s.friction.sliding,
                     cycles: s.info.cycles,
                 })
@@ -73,6 +78,7 @@ impl AccuracyProblem {
             AccuracyProblem::Line { problem, params } => {
                 line::solve(problem, &params(problem, level), None).map(|s| LevelOutputs {
                     h_central: s.film.h_central,
+                    h_central_grid: s.film.h_central,
                     mu_bar: s.friction.sliding,
                     cycles: s.info.cycles,
                 })
@@ -97,6 +103,7 @@ impl AccuracyProblem {
                 };
                 Some(point::solve(problem, &doubled, None).map(|s| LevelOutputs {
                     h_central: s.film.h_central,
+                    h_central_grid: s.grid_h_central(),
                     mu_bar: s.friction.sliding,
                     cycles: s.info.cycles,
                 }))

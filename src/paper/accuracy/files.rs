@@ -13,11 +13,13 @@ struct LevelRow<'a> {
     level: u32,
     points: &'a str,
     h_central: Option<f64>,
+    h_central_grid: Option<f64>,
     mu_bar_sliding: Option<f64>,
     reference: &'a str,
     h_central_ref: Option<f64>,
     mu_bar_ref: Option<f64>,
     h_central_error: Option<f64>,
+    h_central_grid_error: Option<f64>,
     mu_bar_error: Option<f64>,
     observed_order_h: Option<f64>,
     observed_order_mu: Option<f64>,
@@ -52,6 +54,7 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
                 h_central_ref: r.map(|r| r.h_central),
                 mu_bar_ref: r.map(|r| r.mu_bar),
                 h_central_error: e.map(|e| e.0),
+                h_central_grid_error: s.grid_film_error(run),
                 mu_bar_error: e.map(|e| e.1),
                 observed_order_h: order.map(|o| o.0),
                 observed_order_mu: order.map(|o| o.1),
@@ -66,6 +69,7 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
             out.push(match &run.outcome {
                 Ok(m) => LevelRow {
                     h_central: Some(m.h_central),
+                    h_central_grid: Some(m.h_central_grid),
                     mu_bar_sliding: Some(m.mu_bar),
                     cycles: m.cycles,
                     status: "ok".to_string(),
@@ -131,17 +135,22 @@ pub fn to_text(studies: &[AccuracyResult], recs: &[Recommendation]) -> String {
                         .unwrap_or_default()
             ));
         }
-        out.push_str("  level  Hc           mu-bar     err Hc    err mu-bar  cycles  time (s)\n");
+        out.push_str(
+            "  level  Hc           mu-bar     err Hc    (grid's)  err mu-bar  cycles  time (s)\n",
+        );
         for run in &s.levels {
             match &run.outcome {
                 Ok(m) => {
                     let e = s.errors(run);
                     out.push_str(&format!(
-                        "  {:>5}  {:<11.5e}  {:<9.4}  {:>8}  {:>10}  {:>6}  {:>8.3}\n",
+                        "  {:>5}  {:<11.5e}  {:<9.4}  {:>8}  {:>8}  {:>10}  {:>6}  {:>8.3}\n",
                         run.level,
                         m.h_central,
                         m.mu_bar,
                         e.map(|e| format!("{:.2e}", e.0)).unwrap_or_default(),
+                        s.grid_film_error(run)
+                            .map(|e| format!("{e:.2e}"))
+                            .unwrap_or_default(),
                         e.map(|e| format!("{:.2e}", e.1)).unwrap_or_default(),
                         m.cycles,
                         run.seconds

@@ -30,11 +30,12 @@
 pub mod cases;
 pub mod files;
 pub mod picture;
+mod reference;
 
 use crate::paper::target::median;
 use crate::solver::output::SolveError;
-use crate::solver::richardson::{estimate, FIRST_ORDER};
 pub use cases::{AccuracyCase, AccuracyProblem, LevelOutputs};
+pub use reference::reference;
 use std::time::Instant;
 
 /// Error of `mu-bar` under which a level is taken as good enough for a target.
@@ -70,11 +71,6 @@ pub struct Reference {
 }
 
 pub use crate::solver::richardson::ORDER_RANGE;
-
-/// `f` extrapolated from the level below, `c`, at order `p`.
-fn extrapolate(c: f64, f: f64, p: f64) -> f64 {
-    f + (f - c) / (2f64.powf(p) - 1.0)
-}
 
 /// A case and its levels.
 #[derive(Debug, Clone)]
@@ -132,7 +128,7 @@ impl DomainCheck {
             level: fine.level,
             change: doubled.map(|d| {
                 (
-                    (d.h_central / own.h_central - 1.0).abs(),
+                    (d.h_central_grid / own.h_central_grid - 1.0).abs(),
                     (d.mu_bar / own.mu_bar - 1.0).abs(),
                 )
             }),
@@ -140,48 +136,9 @@ impl DomainCheck {
     }
 }
 
-/// The reference of a case from its converged levels.
-pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
-    let ok: Vec<(u32, LevelOutputs)> = levels
-        .iter()
-        .filter_map(|r| r.outcome.as_ref().ok().map(|m| (r.level, *m)))
-        .collect();
-    let (&(lf, f), rest) = ok.split_last()?;
-    let prev = rest.last().filter(|(l, _)| *l + 1 == lf).map(|p| p.1);
-    let Some(c) = prev else {
-        return Some(Reference {
-            h_central: f.h_central,
-            mu_bar: f.mu_bar,
-            kind: "finest",
-            order: None,
-            order_used: None,
-        });
-    };
-    let coarse =
-        (rest.len() >= 2 && rest[rest.len() - 2].0 + 2 == lf).then(|| rest[rest.len() - 2].1);
-    let Some(a) = coarse else {
-        return Some(Reference {
-            h_central: extrapolate(c.h_central, f.h_central, 2.0),
-            mu_bar: extrapolate(c.mu_bar, f.mu_bar, 2.0),
-            kind: "richardson",
-            order: None,
-            order_used: Some((2.0, 2.0)),
-        });
-    };
-    // The solver's own estimate over the three levels (the same fit and acceptance).
-    let film = estimate(&[a.h_central, c.h_central, f.h_central], FIRST_ORDER)?;
-    let mu = estimate(&[a.mu_bar, c.mu_bar, f.mu_bar], FIRST_ORDER)?;
-    Some(Reference {
-        h_central: film.extrapolated,
-        mu_bar: mu.extrapolated,
-        kind: "observed-order",
-        order: film.order.zip(mu.order),
-        order_used: Some((film.order_used, mu.order_used)),
-    })
-}
-
 impl AccuracyResult {
-    /// Relative errors `(film, mu-bar)` of a level against the reference.
+    /// Relative errors `(film, mu-bar)` of a level against the reference: the film as the
+    /// rule reports it (tau-extrapolated where it extrapolates).
     pub fn errors(&self, run: &LevelRun) -> Option<(f64, f64)> {
         let r = self.reference?;
         let m = run.outcome.as_ref().ok()?;
@@ -189,6 +146,22 @@ impl AccuracyResult {
             (m.h_central / r.h_central - 1.0).abs(),
             (m.mu_bar / r.mu_bar - 1.0).abs(),
         ))
+    }
+
+    /// The relative error of a level's own central film (the grid's, before any
+    /// tau-extrapolation) against the reference.
+    pub fn grid_film_error(&self, run: &LevelRun) -> Option<f64> {
+        let r = self.reference?;
+        let m = run.outcome.as_ref().ok()?;
+        Some((m.h_central_grid / r.h_central - 1.0).abs())
+    }
+
+    /// Whether any level reported its central film tau-extrapolated.
+    pub fn extrapolates_film(&self) -> bool {
+        self.levels
+            .iter()
+            .filter_map(|r| r.outcome.as_ref().ok())
+            .any(|m| m.h_central != m.h_central_grid)
     }
 
     /// The cheapest level whose `mu-bar` error is within `tol`, and that of every finer level
@@ -342,6 +315,7 @@ pub(crate) mod tests {
             level,
             outcome: Ok(LevelOutputs {
                 h_central: h,
+                h_central_grid: h,
                 mu_bar: mu,
                 cycles: 10,
             }),
@@ -379,6 +353,26 @@ pub(crate) mod tests {
         let r = reference(&levels[2..]).unwrap();
         assert_eq!((r.kind, r.order_used), ("richardson", Some((2.0, 2.0))));
         assert!((r.h_central - 2.0).abs() < 1e-14, "{}", r.h_central);
+    }
+
+    #[test]
+    fn the_reference_reads_the_grids_films_and_the_reported_one_is_measured_against_it() {
+        // X_n = 2 + 3 h^2 (exact at order 2). Level 7's film reported tau-extrapolated, 1e-6
+        // from the limit: the reference is still the grids' (2), the reported film's error
+        // is its 5e-7 and the grid's own its 3 h^2 / 2 = 9.2e-5.
+        let x = |n: u32| 2.0 + 3.0 * 4f64.powi(-(n as i32));
+        let mut levels: Vec<_> = (5..=7).map(|n| run(n, x(n), x(n))).collect();
+        let plain = reference(&levels).unwrap();
+        if let Ok(m) = &mut levels[2].outcome {
+            m.h_central = 2.0 + 1e-6;
+        }
+        let s = study(levels);
+        assert_eq!(s.reference.unwrap().h_central, plain.h_central);
+        assert!(s.extrapolates_film());
+        let top = &s.levels[2];
+        assert!((s.errors(top).unwrap().0 - 5e-7).abs() < 1e-12);
+        let grid = s.grid_film_error(top).unwrap();
+        assert!((grid - 1.5 * 4f64.powi(-7)).abs() < 1e-12, "{grid}");
     }
 
     #[test]

@@ -6,39 +6,58 @@ use crate::paper::picture::MU_BAR;
 use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
 
-/// `figures/accuracy.svg`: the `mu-bar` error of each level against its wall time, log-log,
-/// one line per case through its levels, each marker labelled with its level. A level whose error is zero (the finest, when it is its own reference)
-/// cannot be drawn on a log axis and is counted in the figure's note by the plot module.
-pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
-    let series = studies
+/// One quantity of the study drawn against wall time.
+#[derive(Clone, Copy)]
+enum Drawn {
+    /// Sliding `mu-bar`.
+    Friction,
+    /// The central film as the rule reports it.
+    Film,
+    /// The grid's own central film (a case whose film the rule tau-extrapolates).
+    GridFilm,
+}
+
+/// The series of `s` (the `i`-th series of its picture) for `drawn`: its levels' errors
+/// against their wall times, joined and labelled by level.
+fn series(s: &AccuracyResult, i: usize, drawn: Drawn) -> Series {
+    let (points, point_labels) = s
+        .levels
         .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            let (points, point_labels) = s
-                .levels
-                .iter()
-                .filter_map(|r| Some(((r.seconds, s.errors(r)?.1), format!("L{}", r.level))))
-                .unzip();
-            Series {
-                // Point contacts by name alone (most are), the others with their kind: a short
-                // label keeps the legend in columns below the chart where it cannot sit inside.
-                label: if s.kind == "point" {
-                    s.name.to_string()
-                } else {
-                    format!("{} ({} contact)", s.name, s.kind)
-                },
-                points,
-                marker: Marker::of_series(i),
-                joined: true,
-                point_labels,
-                y_errors: Vec::new(),
-            }
+        .filter_map(|r| {
+            let error = match drawn {
+                Drawn::Friction => s.errors(r)?.1,
+                Drawn::Film => s.errors(r)?.0,
+                Drawn::GridFilm => s.grid_film_error(r)?,
+            };
+            Some(((r.seconds, error), format!("L{}", r.level)))
         })
-        .collect();
-    let fig = Figure {
-        title: "What accuracy costs: each case through its levels (L5 = level 5)".into(),
+        .unzip();
+    // Point contacts by name alone (most are), the others with their kind: a short label
+    // keeps the legend in columns below the chart where it cannot sit inside.
+    let name = if s.kind == "point" {
+        s.name.to_string()
+    } else {
+        format!("{} ({} contact)", s.name, s.kind)
+    };
+    Series {
+        label: match drawn {
+            Drawn::GridFilm => format!("{name}, the grid's film"),
+            Drawn::Friction | Drawn::Film => name,
+        },
+        points,
+        marker: Marker::of_series(i),
+        joined: true,
+        point_labels,
+        y_errors: Vec::new(),
+    }
+}
+
+/// The picture of `series` against wall time, log-log, with the error's name `y_label`.
+fn picture(title: &str, y_label: String, series: Vec<Series>) -> Figure {
+    Figure {
+        title: title.into(),
         x_label: "wall time of one solve (s)".into(),
-        y_label: format!("error of sliding {MU_BAR} vs Richardson extrapolation"),
+        y_label,
         x_scale: Scale::Log,
         y_scale: Scale::Log,
         x_range: None,
@@ -46,8 +65,46 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
         series,
         curves: Vec::new(),
         note: None,
-    };
+    }
+}
+
+/// `figures/accuracy.svg`: the `mu-bar` error of each level against its wall time, log-log,
+/// one line per case through its levels, each marker labelled with its level. A level whose
+/// error is zero (the finest, when it is its own reference) cannot be drawn on a log axis and
+/// is counted in the figure's note by the plot module.
+pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
+    let series = studies
+        .iter()
+        .enumerate()
+        .map(|(i, s)| series(s, i, Drawn::Friction))
+        .collect();
+    let fig = picture(
+        "What accuracy costs: each case through its levels (L5 = level 5)",
+        format!("error of sliding {MU_BAR} vs Richardson extrapolation"),
+        series,
+    );
     render_svg(&fig).map_err(|e| PipelineError::plot("accuracy.svg", e))
+}
+
+/// `figures/accuracy_film.svg`: the central film's error as [`svg`] draws the friction's: the
+/// film each level reports, and beside it, for a case whose film the rule tau-extrapolates at
+/// some level, the grid's own film, so that the extrapolation's gain and cost show against
+/// the uniform levels.
+pub fn film_svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
+    let mut series: Vec<Series> = Vec::new();
+    for s in studies {
+        series.push(self::series(s, series.len(), Drawn::Film));
+        if s.extrapolates_film() {
+            series.push(self::series(s, series.len(), Drawn::GridFilm));
+        }
+    }
+    let fig = picture(
+        "The central film: as reported (tau-extrapolated where the level's estimate misses \
+         its bound) and the grid's own",
+        "error of the central film Hc vs Richardson extrapolation".into(),
+        series,
+    );
+    render_svg(&fig).map_err(|e| PipelineError::plot("accuracy_film.svg", e))
 }
 
 #[cfg(test)]
@@ -73,5 +130,39 @@ mod tests {
                 .count(),
             1
         );
+    }
+
+    #[test]
+    fn the_film_picture_draws_the_grids_film_beside_an_extrapolated_one() {
+        let mut levels = vec![run(5, 1.0, 40.0), run(6, 1.1, 41.0), run(7, 1.15, 41.2)];
+        let plain = svg_film(&levels);
+        // Level 7's film reported tau-extrapolated: a second series, the grid's.
+        if let Ok(m) = &mut levels[2].outcome {
+            m.h_central = 1.17;
+        }
+        let extrapolated = svg_film(&levels);
+        // Each series' joining line in its colour (the first's, the second's).
+        let joined = |svg: &str, colour: &str| {
+            svg.matches(&format!(
+                r#"<polyline fill="none" opacity="1" stroke="{colour}""#
+            ))
+            .count()
+        };
+        assert_eq!(
+            (joined(&plain, "#0072B2"), joined(&plain, "#D55E00")),
+            (1, 0)
+        );
+        assert_eq!(
+            (
+                joined(&extrapolated, "#0072B2"),
+                joined(&extrapolated, "#D55E00")
+            ),
+            (1, 1)
+        );
+        assert!(extrapolated.contains("t, the grid") && !plain.contains("t, the grid"));
+    }
+
+    fn svg_film(levels: &[crate::paper::accuracy::LevelRun]) -> String {
+        film_svg(&[study(levels.to_vec())]).unwrap()
     }
 }

@@ -108,6 +108,18 @@ pub struct PointSolution {
     pub factor: Option<HandedFactor>,
 }
 
+impl PointSolution {
+    /// The grid's own central film, `H` at X = Y = 0 of [`PointSolution::h`]: the reported
+    /// [`PointSolution::film`]'s, or where the solve reported it tau-extrapolated
+    /// ([`OutputErrors::tau_central`]), the finest rung of its error ladder.
+    pub fn grid_h_central(&self) -> f64 {
+        match &self.errors {
+            Some(e) if e.tau_central.is_some() => e.levels[e.levels.len() - 1].h_central,
+            _ => self.film.h_central,
+        }
+    }
+}
+
 /// Solves `problem` with `params` from the Hertzian pressure (full multigrid); `observer` (if
 /// any) hears of every cycle and Newton step.
 pub fn solve(
