@@ -109,13 +109,14 @@ pub struct PointSolution {
 }
 
 impl PointSolution {
-    /// The grid's own central film, `H` at X = Y = 0 of [`PointSolution::h`]: the reported
-    /// [`PointSolution::film`]'s, or where the solve reported it tau-extrapolated
-    /// ([`OutputErrors::tau_central`]), the finest rung of its error ladder.
+    /// The grid's own central film, `H` at X = Y = 0 of [`PointSolution::h`] (what the level's
+    /// film reads, [`Grid::at_centre`]) where the solve reported it tau-extrapolated
+    /// ([`OutputErrors::tau_central`]); elsewhere the reported [`PointSolution::film`]'s (a
+    /// composite grid's comes from its patch, finer than these whole-domain fields).
     pub fn grid_h_central(&self) -> f64 {
-        match &self.errors {
-            Some(e) if e.tau_central.is_some() => e.levels[e.levels.len() - 1].h_central,
-            _ => self.film.h_central,
+        match self.errors.as_ref().and_then(|e| e.tau_central) {
+            Some(_) => self.grid.at_centre(&self.h),
+            None => self.film.h_central,
         }
     }
 }
