@@ -43,6 +43,10 @@ fn main() {
                     film: s.film,
                     friction: s.friction,
                     coarse_cycles: 0,
+                    coarse: point::CoarseChange {
+                        p: Vec::new(),
+                        delta: 0.0,
+                    },
                 });
                 serde_json::json!({
                     "case": name,

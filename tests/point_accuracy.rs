@@ -3,7 +3,7 @@
 //! error, the fitted far field against the a-priori one, and the chain of nested domains
 //! (the error estimate against level 9: `error_bracket.rs`).
 
-use crate::point_contact::{assert_sound, dimensionless, physical, problem, rel};
+use crate::point_contact::{assert_sound, case_214_family, dimensionless, physical, problem, rel};
 use crate::support::appendix_problem;
 use repro::physics::rheology::Rheology;
 use repro::solver::output::{LadderStop, Method, Output, SolveError};
@@ -317,16 +317,7 @@ fn a_members_ladder_stops_where_its_bases_found_a_level_outside_the_range() {
     // within 1e-4). From its base's start the member does not solve level 5 again: it reads
     // the same levels 6-7, converged from the same starts, so the same bits, and says whose
     // finding stopped it.
-    let base = problem(&physical(
-        "mineral-oil-a",
-        100.0,
-        2e9,
-        12.0,
-        0.005,
-        6e6,
-        1.0,
-    ));
-    let member = problem(&physical("mineral-oil-a", 100.0, 2e9, 12.0, 0.02, 4e6, 1.0));
+    let (base, member) = case_214_family();
     let params = Params::for_problem(&base, 7);
     let b = solve(&base, &params, None).unwrap();
     let start = Start::of(&b);

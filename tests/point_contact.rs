@@ -50,6 +50,25 @@ pub(crate) fn physical(
     }
 }
 
+/// Fig. 4 case 214's family (mineral oil A, 100 C, 2 GPa, 12 m/s; M 1 484, L 7.4): its base
+/// at S 0.5 %, 6 MPa and the member at S 2 %, 4 MPa, whose films are within 1e-4 of each
+/// other; its level 5 is outside the asymptotic range at level 7, and its central film is
+/// tau-extrapolated there.
+pub(crate) fn case_214_family() -> (Problem, Problem) {
+    let at = |slip, tau0| {
+        problem(&physical(
+            "mineral-oil-a",
+            100.0,
+            2e9,
+            12.0,
+            slip,
+            tau0,
+            1.0,
+        ))
+    };
+    (at(0.005, 6e6), at(0.02, 4e6))
+}
+
 /// The checks every hard case must pass: P >= 0, H > 0, load balance, nothing non-finite.
 pub(crate) fn assert_sound(s: &PointSolution, what: &str) {
     assert!(

@@ -1,10 +1,10 @@
 //! Tau-extrapolation beside the solve ([`repro::solver::point::AccuracyParams::tau_extrapolation`])
 //! against its oracles: a finer level's central film, and the solve without it.
 
-use crate::point_contact::{dimensionless, problem, rel};
+use crate::point_contact::{case_214_family, dimensionless, problem, rel};
 use repro::physics::rheology::Rheology;
 use repro::solver::output::Output;
-use repro::solver::point::{solve, Params};
+use repro::solver::point::{solve, solve_from, Params, Start};
 
 #[test]
 fn tau_extrapolation_moves_only_the_central_film_the_solve_reports() {
@@ -72,4 +72,33 @@ fn tau_extrapolated_level_7_is_nearer_level_8_than_level_7_is() {
         tau_distance < 0.25 * level_distance,
         "tau {tau_distance:.2e} vs level 7 {level_distance:.2e}"
     );
+}
+
+#[test]
+fn a_members_coarse_problem_starts_from_its_bases_and_reaches_its_film_in_fewer_cycles() {
+    // Continuation for the coarse problem (src/solver/point/tau.rs, `CoarseChange`): Fig. 4
+    // case 214's member from its base at level 7, both extrapolated. The member's solve is
+    // the same bits whether or not its start carries the base's coarse problem; started
+    // from the base's, its coarse problem takes fewer cycles to the same film: each stops
+    // where the film still to come is below 1e-4 of it, so they agree within twice that.
+    let (base, member) = case_214_family();
+    let params = Params::for_problem(&base, 7);
+    let start = Start::of(&solve(&base, &params, None).unwrap());
+    assert!(start.tau.is_some(), "the base was extrapolated");
+    let warm = solve_from(&member, &params, &start, None).unwrap();
+    let restricted = Start {
+        tau: None,
+        ..start.clone()
+    };
+    let cold = solve_from(&member, &params, &restricted, None).unwrap();
+    assert_eq!(warm.p, cold.p, "the solve itself is the same");
+    let (w, c) = (warm.tau.unwrap(), cold.tau.unwrap());
+    assert!(
+        w.coarse_cycles < c.coarse_cycles,
+        "{} coarse cycles from the base's, {} from the restricted top",
+        w.coarse_cycles,
+        c.coarse_cycles
+    );
+    let apart = rel(w.film.h_central, c.film.h_central);
+    assert!(apart < 2e-4, "tau-extrapolated Hc {apart:.2e} apart");
 }

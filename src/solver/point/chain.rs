@@ -127,6 +127,7 @@ fn chain_from(
             outside: None,
             residual: outer.info.residual(),
             factor: None,
+            tau: None,
         };
         let nested = uniform::solve(
             problem,

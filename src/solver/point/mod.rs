@@ -59,13 +59,13 @@ pub use params::{
 };
 pub use refine::AccuracyTarget;
 use std::sync::Arc;
-pub use tau::TauExtrapolated;
+pub use tau::{CoarseChange, TauExtrapolated};
 pub use warm::Start;
 
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
 /// can move a result (the revision guard, tests/revision.rs, fails when a result moves and it
 /// is not).
-pub const SOLVER_REVISION: &str = "point-36";
+pub const SOLVER_REVISION: &str = "point-37";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;

@@ -187,6 +187,10 @@ impl Hierarchy {
     /// with the relative truncation error scaled by `factor`, solved by cycles until `done`
     /// says so (it sees the coarse level after each cycle, its film refreshed), its change
     /// added to the top without relaxing after it.
+    /// The coarse problem's cycles start from the restricted top, or, where `start` gives a
+    /// change from it of the coarse level's size (a related case's, [`super::tau`]), from the
+    /// restricted top plus that change. Returns the coarse problem's solution as a change
+    /// from the restricted top: its pressure at the coarse nodes and its film constant's.
     /// The coarser levels and the force balance's adaptation are put back as they were (the
     /// extrapolation works on fresh coarse levels), so that what the solve does next with
     /// them (its error ladder) is what it would have done without it.
@@ -194,8 +198,9 @@ impl Hierarchy {
         &mut self,
         k: usize,
         factor: f64,
+        start: Option<(&[f64], f64)>,
         mut done: impl FnMut(&LevelFields) -> bool,
-    ) {
+    ) -> (Vec<f64>, f64) {
         let model = self.model;
         let fresh: Vec<LevelFields> = self.levels[..k]
             .iter()
@@ -211,6 +216,19 @@ impl Hierarchy {
             coarsen(fine, &mut lo[k - 1], &model, self.delta);
             scale_tau(fine, &mut lo[k - 1], &natural, factor);
         }
+        let delta = self.delta;
+        let coarse = &mut self.levels[k - 1];
+        if let Some((change, delta_change)) = start.filter(|(c, _)| c.len() == coarse.p.len()) {
+            // The edge keeps the restricted far field.
+            let g = coarse.grid;
+            for j in 1..g.ny {
+                for i in 1..g.nx {
+                    let c = g.idx(i, j);
+                    coarse.p[c] = (coarse.pold[c] + change[c]).max(0.0);
+                }
+            }
+            self.delta += delta_change;
+        }
         loop {
             self.cycle(k - 1);
             self.levels[k - 1].refresh(self.delta, &model);
@@ -218,6 +236,13 @@ impl Hierarchy {
                 break;
             }
         }
+        let coarse = &self.levels[k - 1];
+        let change = coarse
+            .p
+            .iter()
+            .zip(&coarse.pold)
+            .map(|(p, r)| p - r)
+            .collect();
         {
             let (lo, hi) = self.levels.split_at_mut(k);
             correct(&lo[k - 1], &mut hi[0]);
@@ -225,6 +250,7 @@ impl Hierarchy {
         self.levels[k].refresh(self.delta, &model);
         self.levels.splice(..k, kept);
         (self.gain, self.last_defect) = adaptation;
+        (change, self.delta - delta)
     }
 
     /// Starts level `k` from the converged level `k - 1` (full multigrid).

@@ -74,6 +74,9 @@ struct Uniform<'a> {
     /// ([`ladder::output_errors`]).
     coarser: Vec<CoarseSolution>,
     outside_at_base: Option<LadderStop>,
+    /// The start of the tau-extrapolation's coarse problem: the base's, where the member
+    /// started from it ([`tau::CoarseChange`]).
+    tau_start: Option<tau::CoarseChange>,
     clock: Instant,
 }
 
@@ -124,9 +127,9 @@ impl<'a> Uniform<'a> {
         // The coarser levels start from the base's where the member started from it, and
         // stop where the base's did outside the asymptotic range; else they start from the
         // cold solve's states.
-        let (coarser, outside_at_base) = match (start, warm_start) {
-            (StartKind::Warm, Some(s)) => (s.coarser.clone(), s.outside),
-            _ => (coarser, None),
+        let (coarser, outside_at_base, tau_start) = match (start, warm_start) {
+            (StartKind::Warm, Some(s)) => (s.coarser.clone(), s.outside, s.tau.clone()),
+            _ => (coarser, None, None),
         };
         let mut uniform = Uniform {
             problem,
@@ -139,6 +142,7 @@ impl<'a> Uniform<'a> {
             refinements: 0,
             coarser,
             outside_at_base,
+            tau_start,
             clock,
         };
         uniform.settle(observe)?;
@@ -233,7 +237,12 @@ impl Covering for Uniform<'_> {
         self.mg.set_half_points(top);
         self.mg.refresh(top);
         let scale = self.problem.groups.moes_film_scale;
-        Some(tau::extrapolated_outputs(&mut self.mg, &self.params, scale))
+        Some(tau::extrapolated_outputs(
+            &mut self.mg,
+            &self.params,
+            scale,
+            self.tau_start.as_ref(),
+        ))
     }
 
     fn refine(

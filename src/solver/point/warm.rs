@@ -55,6 +55,9 @@ pub struct Start {
     /// Its final level's last Newton-Krylov factor, where it hands one on
     /// ([`super::PointSolution::factor`]).
     pub factor: Option<super::HandedFactor>,
+    /// Its tau-extrapolation's coarse problem, where it was extrapolated: the start of the
+    /// member's on the same grid ([`super::tau::CoarseChange`]).
+    pub tau: Option<super::CoarseChange>,
 }
 
 impl Start {
@@ -75,6 +78,7 @@ impl Start {
                 .and_then(|e| e.stopped)
                 .filter(|stop| stop.is_outside()),
             factor: s.factor.clone(),
+            tau: s.tau.as_ref().map(|t| t.coarse.clone()),
         }
     }
 

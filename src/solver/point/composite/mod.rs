@@ -192,6 +192,7 @@ fn run(
                 outside: None,
                 residual: params.stopping.tolerance,
                 factor: None,
+                tau: None,
             };
             let sol = uniform::solve(
                 problem,
