@@ -107,12 +107,8 @@ class Solution:
         self.thermal: Optional[Dict[str, Any]] = d.get("thermal")
         self.errors: Optional[Dict[str, Any]] = d.get("discretisation_error")
         # The grid's own central film, H at X = Y = 0: `h_central` is it tau-extrapolated
-        # where the solve extrapolated it (the finest rung of the error ladder is the grid's).
-        tau = (self.errors or {}).get("tau_central")
-        rungs = (self.errors or {}).get("levels") or []
-        self.h_central_grid: float = (
-            rungs[-1]["h_central"] if tau is not None and rungs else self.h_central
-        )
+        # where the solve extrapolated it.
+        self.h_central_grid: float = d["h_central_grid"]
 
     def as_dict(self) -> Dict[str, Any]:
         """The object of ``repro solve --json`` (a fresh copy)."""

@@ -19,8 +19,12 @@ pub struct SolveReport<'a> {
     pub case: Value,
     /// The physics the problem composes.
     pub physics: Physics,
-    /// Film thickness.
+    /// Film thickness, as the solve reports it (the central film tau-extrapolated where the
+    /// rule extrapolates it).
     pub film: &'a Film,
+    /// The grid's own central film, `H` at X = Y = 0 (`film.h_central` where not
+    /// extrapolated): what the fields show.
+    pub h_central_grid: f64,
     /// Reduced friction.
     pub friction: &'a Friction,
     /// How the solve went: every field of [`Info`] becomes a key of its own, so a field the
@@ -48,6 +52,7 @@ impl SolveReport<'_> {
             "viscosity": self.physics.viscosity,
             "density": self.physics.density,
             "rheology": self.physics.rheology,
+            "h_central_grid": self.h_central_grid,
             "mu_bar_sliding": self.friction.sliding,
             "mu_bar_rolling": self.friction.rolling,
             "mu_bar_total": self.friction.total(),
@@ -184,6 +189,7 @@ pub fn point_report<'a>(problem: &Problem, s: &'a PointSolution) -> SolveReport<
         }),
         physics: problem.physics(),
         film: &s.film,
+        h_central_grid: s.grid_h_central(),
         friction: &s.friction,
         info: &s.info,
         tau_c: problem.tau_c(),
@@ -358,6 +364,7 @@ pub fn line_report<'a>(problem: &LineProblem, s: &'a LineSolution) -> SolveRepor
         }),
         physics: problem.physics(),
         film: &s.film,
+        h_central_grid: s.film.h_central,
         friction: &s.friction,
         info: &s.info,
         tau_c: problem.tau_c(),
