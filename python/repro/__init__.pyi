@@ -58,8 +58,9 @@ class Solution:
     estimate missed the film bound (2 %, 5 % from M 5 000 up) on a level 6 or finer converged by
     cycles, that film tau-extrapolated (``errors["tau_central"]``), a higher-order value."""
     h_central_grid: float
-    """The grid's own central film, ``H`` at X = Y = 0: what the fields show and what the
-    friction's loaded film (H <= 4 h_central_grid) is measured against."""
+    """The grid's own central film, ``H`` at X = Y = 0 (the key ``h_central_grid`` of
+    ``repro solve --json``): what the fields show and what the friction's loaded film
+    (H <= 4 h_central_grid) is measured against."""
     h_min: float
     """Minimum film H."""
     hc_moes: float
