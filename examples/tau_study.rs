@@ -37,17 +37,11 @@ fn main() {
         let clock = Instant::now();
         let line = match point::solve(&problem, &params, None) {
             Ok(s) => {
-                let tau = s.tau.clone().unwrap_or(point::TauExtrapolated {
-                    p: Vec::new(),
-                    h: Vec::new(),
-                    film: s.film,
-                    friction: s.friction,
-                    coarse_cycles: 0,
-                    coarse: point::CoarseChange {
-                        p: Vec::new(),
-                        delta: 0.0,
-                    },
-                });
+                // Without the extrapolation (`--plain`) the plain outputs stand in for it.
+                let (film, friction) = s
+                    .tau
+                    .as_ref()
+                    .map_or((s.film, s.friction), |t| (t.film, t.friction));
                 serde_json::json!({
                     "case": name,
                     "level": s.info.level,
@@ -57,9 +51,9 @@ fn main() {
                     "h_central": s.film.h_central,
                     "h_min": s.film.h_min,
                     "mu_bar_sliding": s.friction.sliding,
-                    "tau_h_central": tau.film.h_central,
-                    "tau_h_min": tau.film.h_min,
-                    "tau_mu_bar_sliding": tau.friction.sliding,
+                    "tau_h_central": film.h_central,
+                    "tau_h_min": film.h_min,
+                    "tau_mu_bar_sliding": friction.sliding,
                 })
             }
             Err(e) => serde_json::json!({ "case": name, "level": level, "error": e.to_string() }),

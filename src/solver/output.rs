@@ -4,6 +4,9 @@
 use crate::solver::richardson::{estimate, ErrorEstimate, FIRST_ORDER, SCHEME_ORDER};
 use serde::Serialize;
 
+mod failure;
+pub use failure::SolveError;
+
 /// Film thickness results.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Film {
@@ -366,108 +369,6 @@ impl Info {
             .copied()
             .unwrap_or(f64::INFINITY)
     }
-}
-
-/// A solve that did not produce a trustworthy answer.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[non_exhaustive]
-pub enum SolveError {
-    /// The residual did not fall below the tolerance within the cycle budget.
-    #[error("not converged after {cycles} cycles: residual {last:.3e} > tolerance {tolerance:.1e} (history: {history})", last = residual_history.last().copied().unwrap_or(f64::NAN), history = format_history(residual_history))]
-    NotConverged {
-        /// Cycles run.
-        cycles: usize,
-        /// Requested tolerance.
-        tolerance: f64,
-        /// Residual after each cycle.
-        residual_history: Vec<f64>,
-    },
-    /// A NaN or infinity appeared in the pressure, film or residual.
-    #[error("non-finite {what} at cycle {cycle} (history: {history})", history = format_history(residual_history))]
-    NonFinite {
-        /// Which quantity.
-        what: &'static str,
-        /// Cycle in which it appeared.
-        cycle: usize,
-        /// Residual after each completed cycle.
-        residual_history: Vec<f64>,
-    },
-    /// The film collapsed (`H <= 0` somewhere): the grid is too coarse for this load.
-    #[error("film thickness became non-positive (min H = {h_min:.3e}) at level {level}, cycle {cycle}: {advice} (history: {history})", history = format_history(residual_history), advice = level_advice(*level_needed, *finest_level))]
-    FilmCollapse {
-        /// Minimum film.
-        h_min: f64,
-        /// The finest level solved on.
-        level: u32,
-        /// The level estimated to resolve the film, where the solver can estimate it
-        /// ([`crate::solver::point::level_to_resolve`]).
-        level_needed: Option<u32>,
-        /// The finest level the solver accepts.
-        finest_level: u32,
-        /// Cycle.
-        cycle: usize,
-        /// Residual after each completed cycle.
-        residual_history: Vec<f64>,
-    },
-    /// Parameters the solver cannot use.
-    #[error("invalid solver parameter: {0}")]
-    InvalidParams(String),
-}
-
-impl SolveError {
-    /// `Ok` where `level` lies in `levels` (a solver's finest levels), else the
-    /// [`SolveError::InvalidParams`] that names both.
-    pub(crate) fn check_level(
-        level: u32,
-        levels: std::ops::RangeInclusive<u32>,
-    ) -> Result<(), SolveError> {
-        if levels.contains(&level) {
-            Ok(())
-        } else {
-            Err(SolveError::InvalidParams(format!(
-                "level {level} outside {}..={}",
-                levels.start(),
-                levels.end()
-            )))
-        }
-    }
-
-    /// The residual history carried by the error.
-    pub fn residual_history(&self) -> &[f64] {
-        match self {
-            SolveError::NotConverged {
-                residual_history, ..
-            }
-            | SolveError::NonFinite {
-                residual_history, ..
-            }
-            | SolveError::FilmCollapse {
-                residual_history, ..
-            } => residual_history,
-            SolveError::InvalidParams(_) => &[],
-        }
-    }
-}
-
-/// What a collapsed film asks of the grid.
-fn level_advice(needed: Option<u32>, finest: u32) -> String {
-    match needed {
-        Some(n) if n <= finest => {
-            format!("the grid cannot resolve this film; level {n} is estimated to resolve it (--level {n})")
-        }
-        Some(n) => format!(
-            "the grid cannot resolve this film; level {n} is estimated to resolve it, beyond \
-             the solver's finest level {finest}"
-        ),
-        None => "the grid cannot resolve this film; a finer level may resolve it".to_string(),
-    }
-}
-
-fn format_history(h: &[f64]) -> String {
-    h.iter()
-        .map(|r| format!("{r:.2e}"))
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 #[cfg(test)]

@@ -187,6 +187,7 @@ impl Hierarchy {
     /// with the relative truncation error scaled by `factor`, solved by cycles until `done`
     /// says so (it sees the coarse level after each cycle, its film refreshed), its change
     /// added to the top without relaxing after it.
+    ///
     /// The coarse problem's cycles start from the restricted top, or, where `start` gives a
     /// change from it of the coarse level's size (a related case's, [`super::tau`]), from the
     /// restricted top plus that change. Returns the coarse problem's solution as a change
