@@ -52,7 +52,16 @@ fn main() {
         .filter(|r| !r.is_empty())
         .or_else(|| {
             let head = git(&["rev-parse", "HEAD"])?;
-            let mut status = vec!["status", "--porcelain", "--untracked-files=no", "--"];
+            // Without refreshing the index: a status that rewrites it would make the index newer
+            // than this script's run, and the next cargo command would run it (and compile the
+            // crate) again.
+            let mut status = vec![
+                "--no-optional-locks",
+                "status",
+                "--porcelain",
+                "--untracked-files=no",
+                "--",
+            ];
             status.extend(SOURCES);
             let dirty = git(&status).is_some_and(|s| !s.is_empty());
             Some(if dirty { format!("{head}-dirty") } else { head })
