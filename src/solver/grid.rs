@@ -238,6 +238,26 @@ impl Grid {
         }
     }
 
+    /// The same grid with twice the intervals along `Y` (the side lobes' minimum film is made
+    /// across the rolling direction, docs/ACCURACY_NOTES.md, "The error by direction").
+    pub fn refined_y(&self) -> Self {
+        Grid {
+            ny: 2 * self.ny,
+            hy: 0.5 * self.hy,
+            ..*self
+        }
+    }
+
+    /// How many of this grid's intervals make one of `coarse`'s, along `X` and along `Y`: 2
+    /// (full coarsening) or 1 (that direction kept, semi-coarsening).
+    pub fn ratio_to(&self, coarse: &Grid) -> (usize, usize) {
+        let ratio = |fine: usize, coarse: usize| {
+            debug_assert!(fine == coarse || fine == 2 * coarse, "{fine} over {coarse}");
+            fine / coarse
+        };
+        (ratio(self.nx, coarse.nx), ratio(self.ny, coarse.ny))
+    }
+
     /// Nodes along `X`.
     pub fn px(&self) -> usize {
         self.nx + 1
@@ -391,6 +411,12 @@ mod tests {
         }
         let g = Grid::level(&d, 6);
         assert_eq!(g.coarser(), Grid::level(&d, 5));
+        assert_eq!(g.ratio_to(&g.coarser()), (2, 2));
+        let y = g.refined_y();
+        assert_eq!((y.nx, y.ny, y.hx, y.hy), (g.nx, 2 * g.ny, g.hx, 0.5 * g.hy));
+        assert_eq!(y.ratio_to(&g), (1, 2));
+        // The refined grid's even rows are the coarse grid's rows.
+        assert_eq!(y.y(2 * 5), g.y(5));
     }
 
     #[test]

@@ -75,9 +75,10 @@ fn inject(mg: &mut Hierarchy, k: usize) {
     let (lo, hi) = mg.levels.split_at_mut(k + 1);
     let (coarse, fine) = (&mut lo[k], &hi[0]);
     let (gc, gf) = (coarse.grid, fine.grid);
+    let (rx, ry) = gf.ratio_to(&gc);
     for jc in 0..gc.py() {
         for ic in 0..gc.px() {
-            coarse.p[gc.idx(ic, jc)] = fine.p[gf.idx(2 * ic, 2 * jc)];
+            coarse.p[gc.idx(ic, jc)] = fine.p[gf.idx(rx * ic, ry * jc)];
         }
     }
 }

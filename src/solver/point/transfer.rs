@@ -1,11 +1,16 @@
-//! Transfers between a level and the next coarser one (full coarsening, ratio 2): FAS
-//! restriction of the pressure, the film and the residual; bilinear prolongation of the
-//! correction; cubic interpolation of the solution for the full-multigrid start.
+//! Transfers between a level and the next coarser one: FAS restriction of the pressure, the
+//! film and the residual; bilinear prolongation of the correction; cubic interpolation of the
+//! solution for the full-multigrid start. The coarse grid has every second node in each
+//! direction (full coarsening), or every second row and every column (semi-coarsening in `Y`,
+//! from a grid refined across the rolling direction, [`Grid::refined_y`]); each transfer
+//! reads which from the two grids ([`Grid::ratio_to`]).
 //!
 //! Near the cavitation boundary, where a fine neighbour has `P = 0`, the pressure is
 //! injected rather than weighted, and the correction is added only where `P > 0`.
 
 use super::level::{LevelFields, Model};
+#[cfg(doc)]
+use crate::solver::grid::Grid;
 
 /// Full-weighting stencil: centre 4, edges 2, corners 1, over 16.
 const FW: [(isize, isize, f64); 9] = [
@@ -20,10 +25,29 @@ const FW: [(isize, isize, f64); 9] = [
     (-1, -1, 1.0),
 ];
 
+/// Semi-coarsening's weighting along `Y`: centre 2, `Y` neighbours 1, over 4.
+const FW_Y: [(isize, isize, f64); 3] = [(0, 0, 2.0), (0, 1, 1.0), (0, -1, 1.0)];
+
+/// Semi-coarsening's weighting along `X`: centre 2, `X` neighbours 1, over 4.
+const FW_X: [(isize, isize, f64); 3] = [(0, 0, 2.0), (1, 0, 1.0), (-1, 0, 1.0)];
+
+/// The restriction's stencil and the sum of its weights for the fine-to-coarse interval ratios
+/// `(rx, ry)`.
+fn weighting(rx: usize, ry: usize) -> (&'static [(isize, isize, f64)], f64) {
+    match (rx, ry) {
+        (2, 2) => (&FW, 16.0),
+        (1, 2) => (&FW_Y, 4.0),
+        (2, 1) => (&FW_X, 4.0),
+        _ => unreachable!("a coarse grid halves one direction or both: ({rx}, {ry})"),
+    }
+}
+
 /// Sets up the coarse problem of the FAS cycle from the fine level's current state
 /// (the fine film and coefficients must be current).
 pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Model, delta: f64) {
     let (gf, gc) = (fine.grid, coarse.grid);
+    let (rx, ry) = gf.ratio_to(&gc);
+    let (stencil, total) = weighting(rx, ry);
     let at = |i: usize, j: usize, di: isize, dj: isize| {
         gf.idx((i as isize + di) as usize, (j as isize + dj) as usize)
     };
@@ -33,20 +57,21 @@ pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Mode
         for ic in 0..gc.px() {
             let c = gc.idx(ic, jc);
             if ic == 0 || jc == 0 || ic == gc.nx || jc == gc.ny {
-                coarse.p[c] = fine.p[gf.idx(2 * ic, 2 * jc)];
+                coarse.p[c] = fine.p[gf.idx(rx * ic, ry * jc)];
                 continue;
             }
-            let (i, j) = (2 * ic, 2 * jc);
-            let dry = FW
+            let (i, j) = (rx * ic, ry * jc);
+            let dry = stencil
                 .iter()
                 .any(|&(di, dj, _)| fine.p[at(i, j, di, dj)] == 0.0);
             coarse.p[c] = if dry {
                 fine.p[gf.idx(i, j)]
             } else {
-                FW.iter()
+                stencil
+                    .iter()
                     .map(|&(di, dj, w)| w * fine.p[at(i, j, di, dj)])
                     .sum::<f64>()
-                    / 16.0
+                    / total
             };
         }
     }
@@ -54,7 +79,7 @@ pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Mode
     // Film: injection; the coarse film equation is shifted so that it reproduces it.
     for jc in 0..gc.py() {
         for ic in 0..gc.px() {
-            coarse.h[gc.idx(ic, jc)] = fine.h[gf.idx(2 * ic, 2 * jc)];
+            coarse.h[gc.idx(ic, jc)] = fine.h[gf.idx(rx * ic, ry * jc)];
         }
     }
     coarse.deformation.apply(&coarse.p, &mut coarse.w);
@@ -65,16 +90,16 @@ pub(crate) fn coarsen(fine: &LevelFields, coarse: &mut LevelFields, model: &Mode
     // Reynolds: restricted residual (zero where the fine pressure is zero) plus L_c(P_c).
     for jc in 1..gc.ny {
         for ic in 1..gc.nx {
-            let (i, j) = (2 * ic, 2 * jc);
+            let (i, j) = (rx * ic, ry * jc);
             let mut r = 0.0;
-            for &(di, dj, w) in &FW {
+            for &(di, dj, w) in stencil {
                 let (fi, fj) = ((i as isize + di) as usize, (j as isize + dj) as usize);
                 let centre = di == 0 && dj == 0;
                 if centre || fine.p[gf.idx(fi, fj)] > 0.0 {
                     r += w * fine.residual(fi, fj);
                 }
             }
-            coarse.f[gc.idx(ic, jc)] = r / 16.0 + coarse.operator(&coarse.p, ic, jc);
+            coarse.f[gc.idx(ic, jc)] = r / total + coarse.operator(&coarse.p, ic, jc);
         }
     }
     // Force balance.
@@ -107,6 +132,7 @@ pub(crate) fn scale_tau(
 pub(crate) fn correct(coarse: &LevelFields, fine: &mut LevelFields) {
     let weight = fine.correction_weight;
     let (gf, gc) = (fine.grid, coarse.grid);
+    let (rx, ry) = gf.ratio_to(&gc);
     let e = |ic: usize, jc: usize| {
         let k = gc.idx(ic, jc);
         coarse.p[k] - coarse.pold[k]
@@ -117,8 +143,8 @@ pub(crate) fn correct(coarse: &LevelFields, fine: &mut LevelFields) {
             if fine.p[k] <= 0.0 {
                 continue;
             }
-            let (ic, jc) = (i / 2, j / 2);
-            let corr = match (i % 2, j % 2) {
+            let (ic, jc) = (i / rx, j / ry);
+            let corr = match (i % rx, j % ry) {
                 (0, 0) => e(ic, jc),
                 (1, 0) => 0.5 * (e(ic, jc) + e(ic + 1, jc)),
                 (0, 1) => 0.5 * (e(ic, jc) + e(ic, jc + 1)),
@@ -148,20 +174,25 @@ fn cubic_line(n: usize, get: impl Fn(usize) -> f64, mut set: impl FnMut(usize, f
 /// projected on `P >= 0`, the fine level's far field on its boundary.
 pub(crate) fn interpolate_solution(coarse: &LevelFields, fine: &mut LevelFields) {
     let (gf, gc) = (fine.grid, coarse.grid);
+    let (rx, ry) = gf.ratio_to(&gc);
     fine.p.iter_mut().for_each(|v| *v = 0.0);
     for jc in 0..gc.py() {
         for ic in 0..gc.px() {
-            fine.p[gf.idx(2 * ic, 2 * jc)] = coarse.p[gc.idx(ic, jc)];
+            fine.p[gf.idx(rx * ic, ry * jc)] = coarse.p[gc.idx(ic, jc)];
         }
     }
     let p = &mut fine.p;
-    for i in (0..=gf.nx).step_by(2) {
-        let col: Vec<f64> = (0..gf.py()).map(|j| p[gf.idx(i, j)]).collect();
-        cubic_line(gf.ny, |j| col[j], |j, v| p[gf.idx(i, j)] = v);
+    if ry == 2 {
+        for i in (0..=gf.nx).step_by(rx) {
+            let col: Vec<f64> = (0..gf.py()).map(|j| p[gf.idx(i, j)]).collect();
+            cubic_line(gf.ny, |j| col[j], |j, v| p[gf.idx(i, j)] = v);
+        }
     }
-    for j in 0..gf.py() {
-        let row: Vec<f64> = (0..gf.px()).map(|i| p[gf.idx(i, j)]).collect();
-        cubic_line(gf.nx, |i| row[i], |i, v| p[gf.idx(i, j)] = v);
+    if rx == 2 {
+        for j in 0..gf.py() {
+            let row: Vec<f64> = (0..gf.px()).map(|i| p[gf.idx(i, j)]).collect();
+            cubic_line(gf.nx, |i| row[i], |i, v| p[gf.idx(i, j)] = v);
+        }
     }
     for j in 0..gf.py() {
         for i in 0..gf.px() {
@@ -173,5 +204,77 @@ pub(crate) fn interpolate_solution(coarse: &LevelFields, fine: &mut LevelFields)
                 p[k].max(0.0)
             };
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::case::Problem;
+    use crate::solver::grid::{Domain, Grid};
+
+    /// A smooth positive pressure: cubic in `Y` (which the four-point interpolation along `Y`
+    /// reproduces), anything in `X`.
+    fn cubic_in_y(x: f64, y: f64) -> f64 {
+        2.0 + x.sin() + y * (1.0 + y * (0.5 - 0.2 * y))
+    }
+
+    fn max_error(grid: &Grid, p: &[f64], f: impl Fn(f64, f64) -> f64, interior: bool) -> f64 {
+        let skip = usize::from(interior);
+        let mut worst = 0.0f64;
+        for j in skip..grid.py() - skip {
+            for i in skip..grid.px() - skip {
+                worst = worst.max((p[grid.idx(i, j)] - f(grid.x(i), grid.y(j))).abs());
+            }
+        }
+        worst
+    }
+
+    /// Restricts `f`, sampled on `fine`'s grid, to `coarse` and returns the largest error at
+    /// the coarse nodes (the fine film and coefficients brought up to date first).
+    fn restriction_error(
+        fine: &mut LevelFields,
+        coarse: &mut LevelFields,
+        model: &Model,
+        f: impl Fn(f64, f64) -> f64,
+    ) -> f64 {
+        fine.p = fine.grid.sample(&f);
+        fine.refresh(0.3, model);
+        coarsen(fine, coarse, model, 0.3);
+        max_error(&coarse.grid, &coarse.p, f, false)
+    }
+
+    #[test]
+    fn semi_coarsening_in_y_transfers_what_its_stencils_reproduce() {
+        let model = Model::new(&Problem::circular(100.0, 10.0, 0.5));
+        let gc = Grid::level(&Domain::default(), 4);
+        let gf = gc.refined_y();
+        let (mut coarse, mut fine) = (LevelFields::new(gc, &model), LevelFields::new(gf, &model));
+        // The full-multigrid start: cubic along `Y` only, the coarse columns kept.
+        coarse.p = gc.sample(cubic_in_y);
+        interpolate_solution(&coarse, &mut fine);
+        assert!(max_error(&gf, &fine.p, cubic_in_y, true) < 1e-12);
+        // The correction: linear along `Y`, every fine node on a coarse column.
+        let change = |x: f64, y: f64| x * x + 0.5 * y;
+        fine.p = gf.sample(|_, _| 1.0);
+        coarse.pold = gc.zeros();
+        coarse.p = gc.sample(change);
+        correct(&coarse, &mut fine);
+        assert!(max_error(&gf, &fine.p, |x, y| 1.0 + change(x, y), true) < 1e-12);
+        // The restriction of a pressure linear in `Y` (weights 1 2 1 over 4) is its value.
+        let linear = |x: f64, y: f64| 3.0 + x.cos() + 0.4 * y;
+        assert!(restriction_error(&mut fine, &mut coarse, &model, linear) < 1e-12);
+    }
+
+    #[test]
+    fn full_coarsening_restricts_a_bilinear_pressure_to_its_values() {
+        let model = Model::new(&Problem::circular(100.0, 10.0, 0.5));
+        let gf = Grid::level(&Domain::default(), 4);
+        let (mut coarse, mut fine) = (
+            LevelFields::new(gf.coarser(), &model),
+            LevelFields::new(gf, &model),
+        );
+        let bilinear = |x: f64, y: f64| 3.0 + 0.3 * x + 0.4 * y + 0.1 * x * y;
+        assert!(restriction_error(&mut fine, &mut coarse, &model, bilinear) < 1e-12);
     }
 }
