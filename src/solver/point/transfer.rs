@@ -249,31 +249,50 @@ mod tests {
         max_error(&coarse.grid, &coarse.p, f, false)
     }
 
-    #[test]
-    fn semi_coarsening_in_y_transfers_what_its_stencils_reproduce() {
+    /// A fine level on `gf` and a coarse one on `gc`, of a moderately loaded contact.
+    fn levels(gf: Grid, gc: Grid) -> (Model, LevelFields, LevelFields) {
         let model = Model::new(&Problem::circular(100.0, 10.0, 0.5));
-        let gc = Grid::level(&Domain::default(), 4);
-        let gf = gc.refined_y();
-        let (mut coarse, mut fine) = (LevelFields::new(gc, &model), LevelFields::new(gf, &model));
-        // The full-multigrid start: cubic along `Y` only, the coarse columns kept.
-        coarse.p = gc.sample(cubic_in_y);
+        let (fine, coarse) = (LevelFields::new(gf, &model), LevelFields::new(gc, &model));
+        (model, fine, coarse)
+    }
+
+    /// Checks the three transfers between `gf`, refined in one direction, and `gc` on functions
+    /// of that direction they must reproduce (written for `Y`; `along_x` exchanges `X` and `Y`
+    /// in them).
+    fn semi_coarsening_reproduces(gf: Grid, gc: Grid, along_x: bool) {
+        let along =
+            |f: fn(f64, f64) -> f64| move |x: f64, y: f64| if along_x { f(y, x) } else { f(x, y) };
+        let (model, mut fine, mut coarse) = levels(gf, gc);
+        // The full-multigrid start: cubic along the refined direction only, the coarse
+        // lines kept.
+        let cubic = along(cubic_in_y);
+        coarse.p = gc.sample(cubic);
         interpolate_solution(&coarse, &mut fine);
-        assert!(max_error(&gf, &fine.p, cubic_in_y, true) < ROUNDING);
-        // The correction: linear along `Y`, every fine node on a coarse column.
-        let change = |x: f64, y: f64| x * x + 0.5 * y;
-        fine.p = gf.sample(|_, _| 1.0);
+        assert!(max_error(&gf, &fine.p, cubic, true) < ROUNDING);
+        // The correction: linear along the refined direction, every fine node on a coarse line
+        // (added to a pressure of 4, which keeps the sum clear of the projection on `P >= 0`
+        // at the domain's inlet end, `X = -2.5`).
+        let change = along(|x, y| x * x + 0.5 * y);
+        fine.p = gf.sample(|_, _| 4.0);
         coarse.pold = gc.zeros();
         coarse.p = gc.sample(change);
         correct(&coarse, &mut fine);
-        assert!(max_error(&gf, &fine.p, |x, y| 1.0 + change(x, y), true) < ROUNDING);
-        // The restriction of a pressure linear in `Y` (weights 1 2 1 over 4) is its value.
-        let linear = |x: f64, y: f64| 3.0 + x.cos() + 0.4 * y;
+        assert!(max_error(&gf, &fine.p, |x, y| 4.0 + change(x, y), true) < ROUNDING);
+        // The restriction of a pressure linear along it (weights 1 2 1 over 4) is its value.
+        let linear = along(|x, y| 3.0 + x.cos() + 0.4 * y);
         assert!(restriction_error(&mut fine, &mut coarse, &model, linear) < ROUNDING);
     }
 
     #[test]
+    fn semi_coarsening_in_y_transfers_what_its_stencils_reproduce() {
+        let gc = Grid::level(&Domain::default(), 4);
+        let gf = gc.refined_y();
+        assert_eq!(gf.ratio_to(&gc), (1, 2));
+        semi_coarsening_reproduces(gf, gc, false);
+    }
+
+    #[test]
     fn semi_coarsening_in_x_transfers_what_its_stencils_reproduce() {
-        let model = Model::new(&Problem::circular(100.0, 10.0, 0.5));
         let gc = Grid::level(&Domain::default(), 4);
         let gf = Grid {
             nx: 2 * gc.nx,
@@ -281,23 +300,13 @@ mod tests {
             ..gc
         };
         assert_eq!(gf.ratio_to(&gc), (2, 1));
-        let (mut coarse, mut fine) = (LevelFields::new(gc, &model), LevelFields::new(gf, &model));
-        let cubic_in_x = |x: f64, y: f64| cubic_in_y(y, x);
-        coarse.p = gc.sample(cubic_in_x);
-        interpolate_solution(&coarse, &mut fine);
-        assert!(max_error(&gf, &fine.p, cubic_in_x, true) < ROUNDING);
-        let linear = |x: f64, y: f64| 3.0 + y.cos() + 0.4 * x;
-        assert!(restriction_error(&mut fine, &mut coarse, &model, linear) < ROUNDING);
+        semi_coarsening_reproduces(gf, gc, true);
     }
 
     #[test]
     fn full_coarsening_restricts_a_bilinear_pressure_to_its_values() {
-        let model = Model::new(&Problem::circular(100.0, 10.0, 0.5));
         let gf = Grid::level(&Domain::default(), 4);
-        let (mut coarse, mut fine) = (
-            LevelFields::new(gf.coarser(), &model),
-            LevelFields::new(gf, &model),
-        );
+        let (model, mut fine, mut coarse) = levels(gf, gf.coarser());
         let bilinear = |x: f64, y: f64| 3.0 + 0.3 * x + 0.4 * y + 0.1 * x * y;
         assert!(restriction_error(&mut fine, &mut coarse, &model, bilinear) < ROUNDING);
     }
