@@ -86,6 +86,22 @@ fn a_member_converged_by_cycles_starts_from_its_base() {
 }
 
 #[test]
+fn a_member_starts_its_top_refined_across_from_its_bases() {
+    // The same family at level 7, where its minimum film misses 10 % (21 %): the base and the
+    // member add the top refined across the rolling direction (256 x 512), the member's
+    // square level from the base's and its top and the 6y rung under it from the base's.
+    let case = physical("mineral-oil-a", 40.0, 3.0, 12.0, 0.02, 4.0);
+    let (warm, base) = warm_agrees(&case, 7, "across");
+    for s in [&base, &warm] {
+        assert!(s.grid.is_refined_y(), "{:?}", s.grid);
+        let across = s.errors.as_ref().and_then(|e| e.across);
+        assert!(across.is_some_and(|a| a.below.is_some()), "{across:?}");
+    }
+    assert_eq!(warm.info.level, 7);
+    assert!(warm.info.cycles < base.info.cycles, "{:?}", warm.info);
+}
+
+#[test]
 fn a_member_of_a_newton_krylov_family_starts_newton_from_its_base() {
     // 5P4E, 40 C, 3 GPa, 12 m/s, S 0.1 %, tau0 8 MPa, level 5: the hard case's family,
     // converged by Newton-Krylov.

@@ -226,6 +226,11 @@ fn the_error_estimate_brackets_level_9_on_the_table_4_case() {
     let e = s.errors.unwrap();
     assert_eq!(e.levels.len(), 2);
     assert_eq!(e.stopped, Some(LadderStop::FilmUnresolved { level: 5 }));
+    // Its level-7 minimum film misses 10 % (21 %): the rule adds the top refined across the
+    // rolling direction, whose outputs are reported and estimated with the 6y under it, so
+    // the bracket above is that estimate's (measured 1.58 times the minimum film's distance).
+    assert!(s.grid.is_refined_y());
+    assert!(e.across.is_some_and(|a| a.below.is_some()), "{e:?}");
 }
 
 #[test]

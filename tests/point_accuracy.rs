@@ -73,7 +73,7 @@ fn a_case_whose_estimate_misses_the_accuracy_target_is_refined_to_the_next_level
     let rule = Params::for_problem(&p, 7);
     assert_eq!(
         rule.accuracy.target,
-        Some(AccuracyTarget::FRICTION),
+        Some(AccuracyTarget::RULE),
         "the rule's target"
     );
     let s = solve(&p, &rule, None).unwrap();
@@ -426,6 +426,7 @@ fn a_refined_level_whose_cycles_alternate_converges_by_cycles() {
     params.accuracy.target = Some(AccuracyTarget {
         mu_bar_sliding: 0.001,
         h_central: None,
+        h_min: None,
     });
     let s = solve(&p, &params, None).unwrap();
     assert_eq!((s.info.level, s.info.method), (8, Method::Cycles));

@@ -248,6 +248,25 @@ impl Grid {
         }
     }
 
+    /// Whether this is a level refined across the rolling direction ([`Grid::refined_y`] of a
+    /// square level: twice its intervals along `Y`).
+    pub fn is_refined_y(&self) -> bool {
+        self.ny == 2 * self.nx
+    }
+
+    /// The square level under a grid refined across the rolling direction (every second node
+    /// along `Y`); the grid itself otherwise.
+    pub fn unrefined_y(&self) -> Self {
+        if !self.is_refined_y() {
+            return *self;
+        }
+        Grid {
+            ny: self.ny / 2,
+            hy: 2.0 * self.hy,
+            ..*self
+        }
+    }
+
     /// How many of this grid's intervals make one of `coarse`'s, along `X` and along `Y`: 2
     /// (full coarsening) or 1 (that direction kept, semi-coarsening).
     pub fn ratio_to(&self, coarse: &Grid) -> (usize, usize) {
@@ -415,6 +434,8 @@ mod tests {
         let y = g.refined_y();
         assert_eq!((y.nx, y.ny, y.hx, y.hy), (g.nx, 2 * g.ny, g.hx, 0.5 * g.hy));
         assert_eq!(y.ratio_to(&g), (1, 2));
+        assert!(y.is_refined_y() && !g.is_refined_y());
+        assert_eq!((y.unrefined_y(), g.unrefined_y()), (g, g));
         // The refined grid's even rows are the coarse grid's rows.
         assert_eq!(y.y(2 * 5), g.y(5));
     }

@@ -109,6 +109,22 @@ pub struct OutputErrors {
     /// ([`crate::solver::point::AccuracyParams::tau_extrapolation`]).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub tau_central: Option<f64>,
+    /// The outputs of a top refined across the rolling direction above the finest of
+    /// `levels`, where the solve added one for its minimum film
+    /// ([`crate::solver::point::AccuracyTarget::h_min`]): the outputs reported
+    /// ([`OutputErrors::estimate`] says how they are estimated).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub across: Option<AcrossValues>,
+}
+
+/// The outputs of a top refined across the rolling direction ([`OutputErrors::across`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
+pub struct AcrossValues {
+    /// The top's (`7y`: level 7 with twice its intervals along `Y`).
+    pub top: LevelValues,
+    /// The level under it refined the same way (`6y`), converged on its own; `None` where it
+    /// did not converge or lies outside the asymptotic range.
+    pub below: Option<LevelValues>,
 }
 
 /// Why a coarser level of the error estimate was not read.
@@ -194,6 +210,7 @@ impl OutputErrors {
             seconds,
             stopped: None,
             tau_central: None,
+            across: None,
         }
     }
 
@@ -208,23 +225,38 @@ impl OutputErrors {
             seconds: self.seconds,
             stopped: self.stopped,
             tau_central: None,
+            across: None,
+        }
+    }
+
+    /// This record with the outputs of a top refined across the rolling direction above its
+    /// finest level ([`OutputErrors::across`]).
+    pub fn with_across(self, across: AcrossValues) -> Self {
+        OutputErrors {
+            across: Some(across),
+            ..self
         }
     }
 
     /// The discretisation error of the reported `output` ([`OutputErrors::value`]): the
-    /// levels' ([`OutputErrors::level_estimate`]), read at [`OutputErrors::tau_central`] if given.
+    /// levels' ([`OutputErrors::level_estimate`]), read at [`OutputErrors::tau_central`] if
+    /// given, else at the top refined across the rolling direction if there is one
+    /// ([`across_estimate`]).
     pub fn estimate(&self, output: Output) -> Option<ErrorEstimate> {
         let levels = self.level_estimate(output)?;
-        Some(match (output, self.tau_central) {
-            (Output::HCentral, Some(tau)) => levels.of_value(tau),
-            _ => levels,
-        })
+        match (output, self.tau_central, self.across) {
+            (Output::HCentral, Some(tau), _) => Some(levels.of_value(tau)),
+            (_, _, Some(across)) => across_estimate(&levels, across, output),
+            _ => Some(levels),
+        }
     }
 
-    /// The reported `output`: the finest level's, the central film tau-extrapolated if given.
+    /// The reported `output`: the finest level's, or the top's refined across the rolling
+    /// direction where there is one; the central film tau-extrapolated if given.
     pub fn value(&self, output: Output) -> f64 {
-        match (output, self.tau_central) {
-            (Output::HCentral, Some(tau)) => tau,
+        match (output, self.tau_central, self.across) {
+            (Output::HCentral, Some(tau), _) => tau,
+            (_, _, Some(across)) => across.top.get(output),
             _ => self.levels[self.levels.len() - 1].get(output),
         }
     }
@@ -246,6 +278,24 @@ impl OutputErrors {
                 .collect::<Vec<_>>(),
             two_level_order,
         )
+    }
+}
+
+/// The discretisation error of the top refined across the rolling direction's `output`,
+/// given the square levels' estimate `levels`: from the top and the level under it refined the
+/// same way, a grid family of its own, at the order the square levels' estimate used (the two
+/// families converge alike; the same safety as any two levels). Without that level, the top's
+/// distance to the square levels' extrapolation: its error is exactly the finest square
+/// level's plus its change from it ([`ErrorEstimate::of_value`]).
+fn across_estimate(
+    levels: &ErrorEstimate,
+    across: AcrossValues,
+    output: Output,
+) -> Option<ErrorEstimate> {
+    let top = across.top.get(output);
+    match across.below {
+        Some(below) => estimate(&[below.get(output), top], levels.order_used),
+        None => Some(levels.of_value(top)),
     }
 }
 
@@ -397,5 +447,41 @@ mod tests {
         let short = OutputErrors::of(vec![at(7, 9.75)], 0.5).refined_to(at(8, 9.875), 2);
         let levels: Vec<u32> = short.levels.iter().map(|v| v.level).collect();
         assert_eq!(levels, [7, 8]);
+    }
+
+    #[test]
+    fn a_top_refined_across_reports_its_outputs_at_their_distance_to_the_extrapolation() {
+        // Levels 6-7 read at the scheme's order (level 5 outside the range): friction 9.0,
+        // 9.6 extrapolate to 9.8; the top's 9.7 is 0.1 from it, times the assumed order's
+        // safety 2.
+        let mut levels = OutputErrors::of(vec![at(6, 9.0), at(7, 9.6)], 0.5);
+        levels.stopped = Some(LadderStop::FilmUnresolved { level: 5 });
+        let top = LevelValues {
+            h_central: 1.01,
+            ..at(7, 9.7)
+        };
+        let mut across = levels
+            .clone()
+            .with_across(AcrossValues { top, below: None });
+        let e = across.estimate(Output::MuBarSliding).unwrap();
+        assert!((across.value(Output::MuBarSliding) - 9.7).abs() < 1e-12);
+        assert!((e.extrapolated - 9.8).abs() < 1e-12);
+        assert!((e.error - 2.0 * 0.1).abs() < 1e-12, "{}", e.error);
+        // The levels' own estimate is untouched: 1.25 x 0.6 / 3.
+        let own = across.level_estimate(Output::MuBarSliding).unwrap();
+        assert!((own.error - 0.25).abs() < 1e-12);
+        // The central film: the top's, unless the level's tau-extrapolation is reported.
+        assert!((across.value(Output::HCentral) - 1.01).abs() < 1e-12);
+        across.tau_central = Some(1.02);
+        assert!((across.value(Output::HCentral) - 1.02).abs() < 1e-12);
+        // Without the top the finest level is reported.
+        assert!((levels.value(Output::MuBarSliding) - 9.6).abs() < 1e-12);
+        // With the level under the top refined the same way (9.5), the two at the square
+        // levels' order: 1.25 x 0.2 / 3.
+        let below = Some(at(6, 9.5));
+        let pair = levels.with_across(AcrossValues { top, below });
+        let e = pair.estimate(Output::MuBarSliding).unwrap();
+        assert!((e.error - 1.25 * 0.2 / 3.0).abs() < 1e-12, "{}", e.error);
+        assert!((e.extrapolated - (9.7 + 0.2 / 3.0)).abs() < 1e-12);
     }
 }

@@ -91,12 +91,16 @@ impl ErrorEstimate {
         (self.error / value).abs()
     }
 
-    /// The estimate of `value`, an approximation of the same output of higher order than the
-    /// finest level's (its tau-extrapolation, [`crate::solver::point::TauExtrapolated`]): a
-    /// safety factor times its distance to this estimate's extrapolation. The two
-    /// extrapolations are independent, so their distance is the larger of their errors unless
-    /// both err alike. The factor is [`SAFETY`] where the order was observed, else
-    /// [`ASSUMED_ORDER_SAFETY`]. Where this estimate is a bound with no order read (three or
+    /// The estimate of `value`, an approximation of the same output better than the finest
+    /// level's (its tau-extrapolation, [`crate::solver::point::TauExtrapolated`], or the top
+    /// refined across the rolling direction above it,
+    /// [`crate::solver::output::OutputErrors::across`]): a safety factor times its distance
+    /// to this estimate's extrapolation. The two extrapolations are independent, so their
+    /// distance is the larger of their errors unless both err alike; a finer grid's error is
+    /// the finest level's plus its change from it, exactly its distance. The factor is
+    /// [`SAFETY`] where the order was observed, else [`ASSUMED_ORDER_SAFETY`] (Fig. 4 case
+    /// 150's `7y` minimum film needs 1.77 against its level 9 extrapolated,
+    /// docs/ACCURACY_NOTES.md, "The top refined across the rolling direction"). Where this estimate is a bound with no order read (three or
     /// more levels alternating or collapsing), its extrapolation is no better than a level,
     /// and the estimate is at least the bound.
     pub fn of_value(&self, value: f64) -> ErrorEstimate {

@@ -28,12 +28,20 @@ impl EstimateCells {
         let levels = errors.map_or(&[][..], |e| e.levels.as_slice());
         EstimateCells {
             error_levels: match (levels.first(), levels.last()) {
-                (Some(a), Some(b)) => format!("{}-{}", a.level, b.level),
+                (Some(a), Some(b)) => format!("{}-{}{}", a.level, b.level, across_words(errors)),
                 _ => String::new(),
             },
             error_status: status(errors),
         }
     }
+}
+
+/// `+7y` where the solve added a top refined across the rolling direction above level 7
+/// ([`OutputErrors::across`]), else nothing.
+fn across_words(errors: Option<&OutputErrors>) -> String {
+    errors
+        .and_then(|e| e.across)
+        .map_or_else(String::new, |a| format!("+{}y", a.top.level))
 }
 
 /// The status of a solved case's estimate: `estimated` where it read two levels or more and

@@ -142,6 +142,12 @@ impl SolveReport<'_> {
             (Some(a), Some(b)) => format!("levels {}-{}", a.level, b.level),
             _ => "no levels".into(),
         };
+        if let Some(top) = e.across {
+            levels += &format!(
+                " under the top {}y refined across the rolling direction",
+                top.top.level
+            );
+        }
         if let Some(stop) = e.stopped {
             levels += &format!(", {}", ladder_stop_words(stop));
         }

@@ -128,6 +128,7 @@ fn chain_from(
             residual: outer.info.residual(),
             factor: None,
             tau: None,
+            across: None,
         };
         let nested = uniform::solve(
             problem,

@@ -8,6 +8,10 @@
 //! chains the level below read; the composite grid ([`super::composite`]) is solved at the
 //! level given (its estimate solves the whole composite again at coarser levels, and an
 //! estimate that misses the target is reported with the solution).
+//!
+//! Where the solve ends on a uniform level up to [`super::refine::ACROSS_LEVEL`] whose minimum
+//! film misses its target, a top refined across the rolling direction is added last
+//! ([`Covering::refine_across`]); the central film keeps the level's tau-extrapolation.
 
 use super::converge::Tally;
 use super::tau::TauExtrapolated;
@@ -52,6 +56,23 @@ pub(super) trait Covering {
     /// the covering gives them: read once the solve ends on this level.
     fn tau_extrapolated(&mut self) -> Option<TauExtrapolated> {
         None
+    }
+    /// Whether a top refined across the rolling direction may still be added
+    /// ([`Covering::refine_across`]).
+    fn may_refine_across(&self) -> bool {
+        false
+    }
+    /// A top refined across the rolling direction added above the level the solve ends on
+    /// and converged, where the minimum film misses its target ([`AccuracyTarget::h_min`]):
+    /// `outputs` with the top's friction, and its values in their estimate
+    /// ([`OutputErrors::across`](crate::solver::output::OutputErrors::across)). Called only
+    /// where [`Covering::may_refine_across`].
+    fn refine_across(
+        &mut self,
+        outputs: Outputs,
+        _observe: &mut dyn FnMut(&Progress),
+    ) -> Result<Outputs, SolveError> {
+        Ok(outputs)
     }
     /// A finer level added and converged: after `outputs` where the estimate missed the
     /// target (the levels it read start the refined level's), without where the film closed.
@@ -101,8 +122,17 @@ pub(super) fn run(
                 .then(|| covering.tau_extrapolated())
                 .flatten();
             let outputs = Outputs { tau, ..outputs };
+            let across = match (&accuracy.target, &outputs.errors) {
+                (Some(target), Some(e)) => target.h_min_missed_by(e),
+                _ => false,
+            };
+            let outputs = if across && covering.may_refine_across() {
+                covering.refine_across(outputs, observe)?
+            } else {
+                outputs
+            };
             let outputs = tau_central(outputs);
-            let film = reported_film(film, &outputs);
+            let film = reported_film(covering.film(), &outputs);
             return Ok(covering.into_solution(film, outputs));
         }
         covering.refine(Some(outputs), observe)?;
@@ -306,6 +336,7 @@ mod tests {
                 patches: Vec::new(),
                 tau: None,
                 factor: None,
+                across_rung: None,
             }
         }
 

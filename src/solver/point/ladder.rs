@@ -24,6 +24,7 @@
 use super::converge::{converge_level, How, Tally};
 use super::cycles::{level_number, stop_outputs};
 use super::edge::settle_edge;
+use super::level::LevelFields;
 use super::multigrid::Hierarchy;
 use super::stopping::{Known, WarmStop};
 use super::{Params, MIN_LEVEL};
@@ -59,7 +60,7 @@ impl CoarseSolution {
 
 /// The outputs of level `k` as it stands (those the stopping rule reads, the total friction
 /// in place of its rolling part).
-fn values(mg: &Hierarchy, k: usize, params: &Params) -> LevelValues {
+pub(super) fn values(mg: &Hierarchy, k: usize, params: &Params) -> LevelValues {
     let [h_central, h_min, sliding, rolling] = stop_outputs(mg, k, params);
     LevelValues {
         level: level_number(&mg.levels[k]),
@@ -228,6 +229,48 @@ pub(super) fn output_errors(
     )
 }
 
+/// The level under the converged top `k`, a top refined across the rolling direction, refined
+/// the same way (`6y` under `7y`): converged on its own as a rung of the ladder is (from
+/// `warm`, the base's, where it fits, else the top injected), in place of the square level
+/// below the top, which is put back after with the film constant. Its values and solution;
+/// `None` where it did not converge or lies outside the asymptotic range ([`LadderStop::outside`]).
+pub(super) fn across_rung(
+    mg: &mut Hierarchy,
+    k: usize,
+    params: &Params,
+    method: Method,
+    warm: Option<&CoarseSolution>,
+    observe: &mut dyn FnMut(&Progress),
+) -> Option<(LevelValues, CoarseSolution)> {
+    let grid = mg.levels[k].grid.coarser();
+    let square = std::mem::replace(&mut mg.levels[k - 1], LevelFields::new(grid, &mg.model));
+    let (delta, sweeps) = (mg.delta, mg.set_coarsest_sweeps(LADDER_COARSEST_SWEEPS));
+    let top = values(mg, k, params);
+    let finer = [
+        Output::HCentral,
+        Output::HMin,
+        Output::MuBarSliding,
+        Output::MuBarTotal,
+    ]
+    .map(|o| top.get(o));
+    let rung = converge_rung(mg, k - 1, params, (method, finer), warm, observe).and_then(|r| {
+        let v = values(mg, k - 1, params);
+        LadderStop::outside(&v, &top).is_none().then(|| {
+            let solution = CoarseSolution {
+                level: v.level,
+                p: mg.levels[k - 1].p.clone(),
+                delta: mg.delta,
+                residual: Some(r),
+            };
+            (v, solution)
+        })
+    });
+    mg.levels[k - 1] = square;
+    mg.delta = delta;
+    mg.set_coarsest_sweeps(sweeps);
+    rung
+}
+
 /// The error estimate of a solve whose strategy cannot restrict its solution (the nested
 /// chain, [`super::chain`]; the composite grid, [`super::composite`]): the same strategy
 /// solved afresh at each level of `below` by `solve_at` (its values, `None` where it does not
@@ -255,5 +298,6 @@ pub(super) fn by_solving_again(
         seconds: clock.elapsed().as_secs_f64(),
         stopped,
         tau_central: None,
+        across: None,
     }
 }

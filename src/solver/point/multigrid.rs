@@ -108,6 +108,15 @@ impl Hierarchy {
         self.levels.len() - 1
     }
 
+    /// Adds a top refined across the rolling direction above the finest level
+    /// ([`Grid::refined_y`]: coarsened to it in `Y` alone, the transfers reading the ratio) and
+    /// returns its index.
+    pub fn add_across_level(&mut self) -> usize {
+        let grid = self.finest().grid.refined_y();
+        self.levels.push(LevelFields::new(grid, &self.model));
+        self.levels.len() - 1
+    }
+
     /// Sets the relaxations per visit of the coarsest grid; returns the previous number.
     pub fn set_coarsest_sweeps(&mut self, sweeps: usize) -> usize {
         std::mem::replace(&mut self.params.multigrid.coarsest_sweeps, sweeps)

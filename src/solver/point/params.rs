@@ -354,7 +354,7 @@ impl Params {
             },
             accuracy: AccuracyParams {
                 error_levels: ERROR_LEVELS,
-                target: Some(super::AccuracyTarget::FRICTION),
+                target: Some(super::AccuracyTarget::RULE),
                 tau_extrapolation: true,
                 ..AccuracyParams::default()
             },

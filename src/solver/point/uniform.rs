@@ -16,20 +16,27 @@
 
 use super::cold::Converged;
 use super::converge::Tally;
+use super::converge::{converge_level, How};
 use super::covering::{self, Covering, Outputs};
 use super::cycles::level_number;
+use super::cycles::stop_outputs;
 use super::edge::settle_top;
 use super::level::LOAD;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::newton::HandedFactor;
+use super::refine::ACROSS_LEVEL;
+use super::stopping::{Known, WarmStop};
 use super::tau::TauExtrapolated;
+use super::warm::AcrossStart;
 use super::{
     cold, friction, ladder, refine, tau, warm, CoarseSolution, Params, PointSolution, Start,
     MAX_LEVEL, MIN_LEVEL,
 };
 use crate::physics::case::Problem;
-use crate::solver::output::{Film, Info, LadderStop, Method, Progress, SolveError, StartKind};
+use crate::solver::output::{
+    AcrossValues, Film, Info, LadderStop, Method, Progress, SolveError, StartKind,
+};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -77,6 +84,11 @@ struct Uniform<'a> {
     /// The start of the tau-extrapolation's coarse problem: the base's, where the member
     /// started from it ([`tau::CoarseChange`]).
     tau_start: Option<tau::CoarseChange>,
+    /// The start of a top refined across the rolling direction: the base's, where the member
+    /// started from it.
+    across_start: Option<AcrossStart>,
+    /// The level under the top refined across, refined the same way, as it converged.
+    across_rung: Option<CoarseSolution>,
     clock: Instant,
 }
 
@@ -127,9 +139,14 @@ impl<'a> Uniform<'a> {
         // The coarser levels start from the base's where the member started from it, and
         // stop where the base's did outside the asymptotic range; else they start from the
         // cold solve's states.
-        let (coarser, outside_at_base, tau_start) = match (start, warm_start) {
-            (StartKind::Warm, Some(s)) => (s.coarser.clone(), s.outside, s.tau.clone()),
-            _ => (coarser, None, None),
+        let (coarser, outside_at_base, tau_start, across_start) = match (start, warm_start) {
+            (StartKind::Warm, Some(s)) => (
+                s.coarser.clone(),
+                s.outside,
+                s.tau.clone(),
+                s.across.clone(),
+            ),
+            _ => (coarser, None, None, None),
         };
         let mut uniform = Uniform {
             problem,
@@ -143,6 +160,8 @@ impl<'a> Uniform<'a> {
             coarser,
             outside_at_base,
             tau_start,
+            across_start,
+            across_rung: None,
             clock,
         };
         uniform.settle(observe)?;
@@ -245,6 +264,75 @@ impl Covering for Uniform<'_> {
         ))
     }
 
+    /// Within the refinements left (none on an exact level, nor at a study's point) and up to
+    /// [`ACROSS_LEVEL`].
+    fn may_refine_across(&self) -> bool {
+        self.may_refine() && !self.mg.finest().grid.is_refined_y() && self.level() <= ACROSS_LEVEL
+    }
+
+    /// The top starts from the base's where the member started from it, else from the level
+    /// below interpolated (cubic along `Y`), and converges by cycles, finished by
+    /// Newton-Krylov where they stall: coarsened in `Y` alone, its cycles contract by 0.38
+    /// where the square levels' do by 0.48 (docs/ACCURACY_NOTES.md, "Semi-coarsening in `Y`").
+    /// Its estimate reads the level under it refined the same way ([`ladder::across_rung`]).
+    /// The level below, as it converged, leads the coarser solutions: a member's start.
+    fn refine_across(
+        &mut self,
+        mut outputs: Outputs,
+        observe: &mut dyn FnMut(&Progress),
+    ) -> Result<Outputs, SolveError> {
+        let below = self.mg.levels.len() - 1;
+        let square = CoarseSolution::converged(&mut self.mg, below);
+        let k = self.mg.add_across_level();
+        let start = self
+            .across_start
+            .as_ref()
+            .filter(|s| s.grid == self.mg.levels[k].grid);
+        let (mg, params) = (&mut self.mg, &self.params);
+        let known = match start {
+            Some(s) => {
+                mg.levels[k].p.copy_from_slice(&s.p);
+                mg.delta = s.delta;
+                mg.make_top(k);
+                mg.refresh(k);
+                Known {
+                    start: Some(WarmStop {
+                        outputs: stop_outputs(mg, k, params),
+                        residual: s.residual,
+                    }),
+                    finer: None,
+                }
+            }
+            None => {
+                mg.make_top(k);
+                mg.interpolate(k);
+                Known::default()
+            }
+        };
+        let how = How::from_converged(params, &known);
+        let method = converge_level(mg, k, params, &how, &mut self.tally, observe)
+            .map_err(|_| self.tally.not_converged(params))?;
+        self.newton_used |= method != Method::Cycles;
+        self.settle(observe)?;
+        let (mg, params) = (&self.mg, &self.params);
+        outputs.friction = friction::friction(
+            mg.finest(),
+            &mg.model,
+            mg.rolling_scale,
+            params.friction.region,
+        );
+        let top = ladder::values(mg, k, params);
+        let warm = self.across_start.as_ref().and_then(|s| s.below.as_ref());
+        let rung = ladder::across_rung(&mut self.mg, k, &self.params, method, warm, observe);
+        let (below, rung) = rung.unzip();
+        self.across_rung = rung;
+        outputs.errors = outputs
+            .errors
+            .map(|e| e.with_across(AcrossValues { top, below }));
+        outputs.coarser.insert(0, square);
+        Ok(outputs)
+    }
+
     fn refine(
         &mut self,
         after: Option<Outputs>,
@@ -301,6 +389,7 @@ impl Covering for Uniform<'_> {
             patches: Vec::new(),
             tau: outputs.tau,
             factor,
+            across_rung: self.across_rung,
         }
     }
 }

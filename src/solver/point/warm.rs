@@ -58,12 +58,56 @@ pub struct Start {
     /// Its tau-extrapolation's coarse problem, where it was extrapolated: the start of the
     /// member's on the same grid ([`super::tau::CoarseChange`]).
     pub tau: Option<super::CoarseChange>,
+    /// The top refined across the rolling direction above `grid`, where the solve added one
+    /// ([`super::AccuracyTarget::h_min`]): the start of the member's.
+    pub across: Option<AcrossStart>,
+}
+
+/// A converged top refined across the rolling direction ([`Start::across`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct AcrossStart {
+    /// Its grid.
+    pub grid: Grid,
+    /// Pressure `P` at its nodes.
+    pub p: Vec<f64>,
+    /// Its film constant.
+    pub delta: f64,
+    /// Its last residual.
+    pub residual: f64,
+    /// The level under it refined the same way, as it converged for the estimate
+    /// ([`crate::solver::output::AcrossValues::below`]), where it did.
+    pub below: Option<super::CoarseSolution>,
 }
 
 impl Start {
-    /// The start a solution gives: a chain's case-sized domain ([`super::chain`]).
+    /// The start a solution gives: a chain's case-sized domain ([`super::chain`]). A solution
+    /// on a top refined across the rolling direction starts a member on the square level
+    /// under it (its first coarser solution) and that top from its own.
     pub fn of(s: &super::PointSolution) -> Self {
         let s = s.surroundings.as_deref().unwrap_or(s);
+        if let (true, [square, coarser @ ..]) = (s.grid.is_refined_y(), s.coarser.as_slice()) {
+            return Start {
+                grid: s.grid.unrefined_y(),
+                p: square.p.clone(),
+                delta: square.delta,
+                residual: square.residual.unwrap_or(s.info.residual()),
+                coarser: coarser.to_vec(),
+                factor: None,
+                across: Some(AcrossStart {
+                    grid: s.grid,
+                    p: s.p.clone(),
+                    delta: s.delta,
+                    residual: s.info.residual(),
+                    below: s.across_rung.clone(),
+                }),
+                ..Start::of_grid(s)
+            };
+        }
+        Start::of_grid(s)
+    }
+
+    /// The start of `s`'s own grid.
+    fn of_grid(s: &super::PointSolution) -> Self {
         Start {
             grid: s.grid,
             level: s.info.level,
@@ -79,6 +123,7 @@ impl Start {
                 .filter(|stop| stop.is_outside()),
             factor: s.factor.clone(),
             tau: s.tau.as_ref().map(|t| t.coarse.clone()),
+            across: None,
         }
     }
 

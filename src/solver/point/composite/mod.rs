@@ -193,6 +193,7 @@ fn run(
                 residual: params.stopping.tolerance,
                 factor: None,
                 tau: None,
+                across: None,
             };
             let sol = uniform::solve(
                 problem,
@@ -478,6 +479,7 @@ impl Covering for Composite<'_> {
                 .map(|p| (p.grid.domain(), p.grid.hx))
                 .collect(),
             factor: None,
+            across_rung: None,
         }
     }
 }
