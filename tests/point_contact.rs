@@ -10,7 +10,6 @@ use repro::physics::rheology::Rheology;
 use repro::solver::grid::Domain;
 use repro::solver::output::{Method, SolveError};
 use repro::solver::point::{solve, Params, PointSolution};
-use repro::solver::subnormal;
 
 pub(crate) fn problem(case: &Case) -> Problem {
     Problem::from_case(case, &LubricantTable::table1()).expect("valid case")
@@ -379,45 +378,6 @@ fn cycles_and_newton_krylov_agree_where_both_converge() {
         "mu-bar {} vs {}",
         newton.friction.sliding,
         cycles.friction.sliding
-    );
-}
-
-#[test]
-fn the_heaviest_table_2_load_is_solved_on_the_heavy_load_domain() {
-    // Mineral oil A at 100 C, 3 GPa, 2 m/s (M = 19 205, the Fig. 4 cases whose film stayed
-    // closed at level 8 on the paper's domain): on the domain the sweeps choose for this load
-    // (Domain::heavy, a 3/4 mesh) the level-7 film still closes and the solver's refinement
-    // opens it at level 8.
-    let c = physical("mineral-oil-a", 100.0, 3e9, 2.0, 0.005, 6e6, 1.0);
-    let p = problem(&c);
-    assert!(p.groups.m > 19_000.0, "M = {}", p.groups.m);
-    let params = Params::for_problem(&p, 7);
-    assert_eq!(params.domain, Domain::heavy());
-    // The solve audited for subnormal numbers, in the processor's default arithmetic (the
-    // solver sets flush-to-zero only inside the preconditioner's factorisation and solves):
-    // its factor's fill decays through f32's subnormal range, 2.7 % of the 100 million
-    // entries of a level-8 factor without the flag, which slowed an Intel core 5-fold
-    // (src/solver/subnormal.rs). Any subnormal entry of a factor or of a GMRES vector fails.
-    assert!(
-        !subnormal::flushes_to_zero(),
-        "the test thread's default arithmetic"
-    );
-    let (s, counts) = subnormal::audit(|| solve(&p, &params, None));
-    let s = s.unwrap_or_else(|e| panic!("M 19 205: {e}"));
-    assert!(
-        !subnormal::flushes_to_zero(),
-        "the solver restores the caller's arithmetic"
-    );
-    assert_sound(&s, "M 19 205");
-    assert_eq!(s.info.level, 8);
-    // The level-8 factors were examined: 201 000 active nodes, about 1e8 entries (at least
-    // 2e7 tells a level-8 factor from a level-7 one, 1.9e7).
-    assert!(counts.largest_factor > 20_000_000, "{counts:?}");
-    assert!(counts.vectors > 100, "{counts:?}");
-    assert_eq!(
-        (counts.factor_subnormals, counts.vector_subnormals),
-        (0, 0),
-        "{counts:?}"
     );
 }
 

@@ -1,5 +1,6 @@
 //! Integration tests: one binary, so the crate links once.
 
+mod at_the_heaviest_load;
 mod browser;
 mod check;
 mod cli;
