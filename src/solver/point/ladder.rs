@@ -49,11 +49,17 @@ impl CoarseSolution {
     /// Level `k` of `mg` as it converged, with its own residual: a refined level's or a grid
     /// sequence's start of the same level of the ladder.
     pub(super) fn converged(mg: &mut Hierarchy, k: usize) -> Self {
+        let residual = mg.residual_norm(k).0;
+        CoarseSolution::at(mg, k, residual)
+    }
+
+    /// Level `k` of `mg` as a rung left it, converged to `residual`.
+    fn at(mg: &Hierarchy, k: usize, residual: f64) -> Self {
         CoarseSolution {
             level: level_number(&mg.levels[k]),
             p: mg.levels[k].p.clone(),
             delta: mg.delta,
-            residual: Some(mg.residual_norm(k).0),
+            residual: Some(residual),
         }
     }
 }
@@ -69,6 +75,18 @@ pub(super) fn values(mg: &Hierarchy, k: usize, params: &Params) -> LevelValues {
         mu_bar_sliding: sliding,
         mu_bar_total: sliding + rolling,
     }
+}
+
+/// `v`'s outputs in the order the stopping rule reads them ([`stop_outputs`]): a rung's
+/// [`Known::finer`].
+fn stop_values(v: &LevelValues) -> [f64; 4] {
+    [
+        Output::HCentral,
+        Output::HMin,
+        Output::MuBarSliding,
+        Output::MuBarTotal,
+    ]
+    .map(|o| v.get(o))
 }
 
 /// Injects level `k + 1`'s pressure onto level `k`'s nodes.
@@ -187,13 +205,7 @@ pub(super) fn output_errors(
             stopped = Some(LadderStop::OutsideAtBase { level });
             break;
         }
-        let finer = [
-            Output::HCentral,
-            Output::HMin,
-            Output::MuBarSliding,
-            Output::MuBarTotal,
-        ]
-        .map(|o| levels[0].get(o));
+        let finer = stop_values(&levels[0]);
         let Some(residual) = converge_rung(mg, k, params, (method, finer), start, observe) else {
             stopped = Some(LadderStop::NotConverged { level });
             break;
@@ -211,12 +223,7 @@ pub(super) fn output_errors(
             break;
         }
         levels.insert(0, v);
-        solutions.push(CoarseSolution {
-            level,
-            p: mg.levels[k].p.clone(),
-            delta: mg.delta,
-            residual: Some(residual),
-        });
+        solutions.push(CoarseSolution::at(mg, k, residual));
     }
     mg.delta = delta;
     mg.set_coarsest_sweeps(sweeps);
@@ -246,24 +253,12 @@ pub(super) fn across_rung(
     let square = std::mem::replace(&mut mg.levels[k - 1], LevelFields::new(grid, &mg.model));
     let (delta, sweeps) = (mg.delta, mg.set_coarsest_sweeps(LADDER_COARSEST_SWEEPS));
     let top = values(mg, k, params);
-    let finer = [
-        Output::HCentral,
-        Output::HMin,
-        Output::MuBarSliding,
-        Output::MuBarTotal,
-    ]
-    .map(|o| top.get(o));
+    let finer = stop_values(&top);
     let rung = converge_rung(mg, k - 1, params, (method, finer), warm, observe).and_then(|r| {
         let v = values(mg, k - 1, params);
-        LadderStop::outside(&v, &top).is_none().then(|| {
-            let solution = CoarseSolution {
-                level: v.level,
-                p: mg.levels[k - 1].p.clone(),
-                delta: mg.delta,
-                residual: Some(r),
-            };
-            (v, solution)
-        })
+        LadderStop::outside(&v, &top)
+            .is_none()
+            .then(|| (v, CoarseSolution::at(mg, k - 1, r)))
     });
     mg.levels[k - 1] = square;
     mg.delta = delta;

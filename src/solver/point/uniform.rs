@@ -35,7 +35,7 @@ use super::{
 };
 use crate::physics::case::Problem;
 use crate::solver::output::{
-    AcrossValues, Film, Info, LadderStop, Method, Progress, SolveError, StartKind,
+    AcrossValues, Film, Friction, Info, LadderStop, Method, Progress, SolveError, StartKind,
 };
 use std::sync::Arc;
 use std::time::Instant;
@@ -177,6 +177,25 @@ impl<'a> Uniform<'a> {
         }
     }
 
+    /// The top level's friction; a non-finite one is the solve's error.
+    fn friction(&self) -> Result<Friction, SolveError> {
+        let mg = &self.mg;
+        let friction = friction::friction(
+            mg.finest(),
+            &mg.model,
+            mg.rolling_scale,
+            self.params.friction.region,
+        );
+        if !friction.sliding.is_finite() || !friction.total().is_finite() {
+            return Err(SolveError::NonFinite {
+                what: "friction",
+                cycle: self.tally.cycles,
+                residual_history: self.tally.history.clone(),
+            });
+        }
+        Ok(friction)
+    }
+
     /// The top level's edge settled ([`super::edge`]).
     fn settle(&mut self, observe: &mut dyn FnMut(&Progress)) -> Result<(), SolveError> {
         settle_top(
@@ -208,20 +227,8 @@ impl Covering for Uniform<'_> {
     /// finally converged.
     fn outputs(&mut self, observe: &mut dyn FnMut(&Progress)) -> Result<Outputs, SolveError> {
         let used = self.method_used();
+        let friction = self.friction()?;
         let (mg, params) = (&mut self.mg, &self.params);
-        let friction = friction::friction(
-            mg.finest(),
-            &mg.model,
-            mg.rolling_scale,
-            params.friction.region,
-        );
-        if !friction.sliding.is_finite() || !friction.total().is_finite() {
-            return Err(SolveError::NonFinite {
-                what: "friction",
-                cycle: self.tally.cycles,
-                residual_history: self.tally.history.clone(),
-            });
-        }
         let (errors, coarser) = if params.accuracy.error_levels > 0 {
             let warm = (self.coarser.as_slice(), self.outside_at_base);
             let (e, c) = ladder::output_errors(mg, params, used, warm, observe);
@@ -314,14 +321,8 @@ impl Covering for Uniform<'_> {
             .map_err(|_| self.tally.not_converged(params))?;
         self.newton_used |= method != Method::Cycles;
         self.settle(observe)?;
-        let (mg, params) = (&self.mg, &self.params);
-        outputs.friction = friction::friction(
-            mg.finest(),
-            &mg.model,
-            mg.rolling_scale,
-            params.friction.region,
-        );
-        let top = ladder::values(mg, k, params);
+        outputs.friction = self.friction()?;
+        let top = ladder::values(&self.mg, k, &self.params);
         let warm = self.across_start.as_ref().and_then(|s| s.below.as_ref());
         let rung = ladder::across_rung(&mut self.mg, k, &self.params, method, warm, observe);
         let (below, rung) = rung.unzip();
