@@ -186,6 +186,17 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
             "{what} {name}: estimate / max(distance, 0.1 %) = {:.2}",
             estimate.error / distance.max(floor)
         );
+        // A level-8 solve's top refined across the rolling direction (512 x 1 024) has level
+        // 9's mesh across it: its minimum film and friction differ from level 9's by the
+        // error along it alone, while their estimate holds both (M 11 070: Hmin 0.78 % from
+        // level 9 under an estimate of 10.6 %, docs/ACCURACY_NOTES.md, "The top refined
+        // across on level 8"). Level 9 bounds those estimates from below only.
+        let shares_level_9s_mesh_across = s.grid.is_refined_y()
+            && s.info.level + 1 == fine_level
+            && matches!(output, Output::HMin | Output::MuBarSliding);
+        if shares_level_9s_mesh_across {
+            continue;
+        }
         assert!(
             estimate.error <= MOST_OVERSTATEMENT * distance.max(floor),
             "{what} {name}: estimate {} for a distance {distance} to level 9 {level_9}",
@@ -244,4 +255,8 @@ fn the_error_estimate_brackets_level_9_on_a_heavy_contact() {
     let e = s.errors.unwrap();
     assert_eq!(e.stopped, Some(LadderStop::FilmClosed { level: 6 }));
     assert!(!e.estimate(Output::MuBarSliding).unwrap().trusted());
+    // Its level-8 minimum film misses 10 % (12.2 %): the rule adds the top refined across the
+    // rolling direction, estimated with the 7y under it.
+    assert!(s.grid.is_refined_y());
+    assert!(e.across.is_some_and(|a| a.below.is_some()), "{e:?}");
 }

@@ -174,6 +174,10 @@ impl AccuracyCase {
 pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
     let mut params = point::Params::for_problem(problem, level);
     params.accuracy.refinement_levels = 0;
+    // Nor a top refined across the rolling direction: the study's levels are square.
+    if let Some(target) = &mut params.accuracy.target {
+        target.h_min = None;
+    }
     params
 }
 

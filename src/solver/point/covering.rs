@@ -9,7 +9,7 @@
 //! level given (its estimate solves the whole composite again at coarser levels, and an
 //! estimate that misses the target is reported with the solution).
 //!
-//! Where the solve ends on a uniform level up to [`super::refine::ACROSS_LEVEL`] whose minimum
+//! Where the solve ends on a uniform level of [`super::refine::ACROSS_LEVELS`] whose minimum
 //! film misses its target, a top refined across the rolling direction is added last
 //! ([`Covering::refine_across`]); the central film keeps the level's tau-extrapolation.
 
@@ -58,8 +58,8 @@ pub(super) trait Covering {
         None
     }
     /// Whether a top refined across the rolling direction may still be added
-    /// ([`Covering::refine_across`]).
-    fn may_refine_across(&self) -> bool {
+    /// ([`Covering::refine_across`]), given the level's estimate `errors`.
+    fn may_refine_across(&self, _errors: &OutputErrors) -> bool {
         false
     }
     /// A top refined across the rolling direction added above the level the solve ends on
@@ -123,10 +123,12 @@ pub(super) fn run(
                 .flatten();
             let outputs = Outputs { tau, ..outputs };
             let across = match (&accuracy.target, &outputs.errors) {
-                (Some(target), Some(e)) => target.h_min_missed_by(e),
+                (Some(target), Some(e)) => {
+                    target.h_min_missed_by(e) && covering.may_refine_across(e)
+                }
                 _ => false,
             };
-            let outputs = if across && covering.may_refine_across() {
+            let outputs = if across {
                 covering.refine_across(outputs, observe)?
             } else {
                 outputs

@@ -24,18 +24,27 @@ pub struct AccuracyTarget {
     /// is a thousandth of the Hertzian approach); `None` for no film target.
     pub h_central: Option<(f64, f64)>,
     /// The minimum film's; `None` for none. Met not by a finer level but by a top refined
-    /// across the rolling direction ([`crate::solver::grid::Grid::refined_y`]) on a level up
-    /// to [`ACROSS_LEVEL`] whose own estimate misses it: the minimum film is made by the mesh
+    /// across the rolling direction ([`crate::solver::grid::Grid::refined_y`]) on a level of
+    /// [`ACROSS_LEVELS`] whose own estimate misses it: the minimum film is made by the mesh
     /// across the rolling direction (docs/ACCURACY_NOTES.md, "The error by direction").
     pub h_min: Option<f64>,
 }
 
-/// The finest level a top refined across the rolling direction is added to. Level 7's
-/// `7y` (256 x 512) costs 0.41-0.71 of level 8's top time for level 8's minimum film; an `8y`
-/// (512 x 1 024) costs more than level 8 itself where it converges by cycles (the M 11 070
-/// member: 1.45 times), and where level 8 closes the side lobes its cycles diverge and the
-/// Newton-Krylov finish takes 124-382 s (docs/ACCURACY_NOTES.md, "Semi-coarsening in `Y`").
-pub const ACROSS_LEVEL: u32 = 7;
+/// The levels a top refined across the rolling direction is added to, whatever refinement
+/// budget is left (a member of a base refined to level 8 has none, and its minimum film is
+/// the one the top serves). Level 7's `7y` (256 x 512) costs 0.41-0.71 of level 8's top time
+/// for level 8's minimum film; level 8's `8y` (512 x 1 024) takes the M 11 070 base from
+/// 27.5 % to 0.8 % off level 9 in its minimum film at 1.75 times level 8's whole cold solve
+/// (docs/ACCURACY_NOTES.md, "The top refined across on level 8"). Below level 7 (the snapshot
+/// profile's levels 5-6) no top is measured.
+pub const ACROSS_LEVELS: std::ops::RangeInclusive<u32> = 7..=8;
+
+/// The finest level whose top is added where its square levels give no estimate of the
+/// minimum film. Above it such a contact (the M 19 205 base, issue 54's thin film) has its
+/// side lobes closed on the levels the top's cycles lean on: they diverge, the Newton-Krylov
+/// finish takes 124-382 s, and the top's own rung is unresolved, so it gets no estimate
+/// either (docs/ACCURACY_NOTES.md, "Semi-coarsening in `Y`").
+pub const ACROSS_UNESTIMATED_LEVEL: u32 = 7;
 
 impl AccuracyTarget {
     /// The Moes load from which the heavy contacts' film bound applies.

@@ -25,7 +25,7 @@ use super::level::LOAD;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::newton::HandedFactor;
-use super::refine::ACROSS_LEVEL;
+use super::refine::{ACROSS_LEVELS, ACROSS_UNESTIMATED_LEVEL};
 use super::stopping::{Known, WarmStop};
 use super::tau::TauExtrapolated;
 use super::warm::AcrossStart;
@@ -35,7 +35,8 @@ use super::{
 };
 use crate::physics::case::Problem;
 use crate::solver::output::{
-    AcrossValues, Film, Friction, Info, LadderStop, Method, Progress, SolveError, StartKind,
+    AcrossValues, Film, Friction, Info, LadderStop, Method, Output, OutputErrors, Progress,
+    SolveError, StartKind,
 };
 use std::sync::Arc;
 use std::time::Instant;
@@ -271,10 +272,16 @@ impl Covering for Uniform<'_> {
         ))
     }
 
-    /// Within the refinements left (none on an exact level, nor at a study's point) and up to
-    /// [`ACROSS_LEVEL`].
-    fn may_refine_across(&self) -> bool {
-        self.may_refine() && !self.mg.finest().grid.is_refined_y() && self.level() <= ACROSS_LEVEL
+    /// On a level of [`ACROSS_LEVELS`], whatever refinement budget is left: the target
+    /// asks for it (none on an exact level, nor at a study's point, whose minimum-film bound
+    /// is cleared).
+    /// Above [`ACROSS_UNESTIMATED_LEVEL`], only where the square levels estimate the
+    /// minimum film.
+    fn may_refine_across(&self, errors: &OutputErrors) -> bool {
+        let level = self.level();
+        !self.mg.finest().grid.is_refined_y()
+            && ACROSS_LEVELS.contains(&level)
+            && (level <= ACROSS_UNESTIMATED_LEVEL || errors.level_estimate(Output::HMin).is_some())
     }
 
     /// The top starts from the base's where the member started from it, else from the level
