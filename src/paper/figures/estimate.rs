@@ -36,8 +36,8 @@ impl EstimateCells {
     }
 }
 
-/// `+7y` where the solve added a top refined across the rolling direction above level 7
-/// ([`OutputErrors::across`]), else nothing.
+/// `+7y` (`+8y`) where the solve added a top refined across the rolling direction above level
+/// 7 (8) ([`OutputErrors::across`]), else nothing.
 fn across_words(errors: Option<&OutputErrors>) -> String {
     errors
         .and_then(|e| e.across)

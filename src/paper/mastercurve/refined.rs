@@ -94,12 +94,12 @@ pub struct Refined {
 /// The coefficients of the level-7 fit (`repro mastercurve --level 7`, figures/mastercurve-fit.csv),
 /// used by `repro predict`; tests/mastercurve.rs refits them.
 pub const REFINED: Refined = Refined {
-    coefficients: [1.000833e0, -7.451708e-2, 4.416362e-1, -4.510438e-1],
+    coefficients: [1.000757e0, -7.451783e-2, 4.423268e-1, -4.523084e-1],
 };
 
 /// Half-width of `repro predict`'s band, relative: the 95th percentile of the cross-validated
 /// relative residuals of the level-7 fit (figures/mastercurve-fit.csv; tests/mastercurve.rs).
-pub const REFINED_BAND: f64 = 4.809251e-2;
+pub const REFINED_BAND: f64 = 4.790182e-2;
 
 impl Refined {
     /// `mu-bar_refined` of a contact.
