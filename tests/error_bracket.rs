@@ -187,13 +187,14 @@ fn assert_estimate_brackets_level_9(case: &Case, what: &str) -> PointSolution {
             estimate.error / distance.max(floor)
         );
         // A level-8 solve's top refined across the rolling direction (512 x 1 024) has level
-        // 9's mesh across it: its minimum film and friction differ from level 9's by the
-        // error along it alone, while their estimate holds both (M 11 070: Hmin 0.78 % from
+        // 9's mesh across it: its minimum film, made by that mesh, differs from level 9's by
+        // the error along it alone, while its estimate holds both (M 11 070: 0.78 % from
         // level 9 under an estimate of 10.6 %, docs/ACCURACY_NOTES.md, "The top refined
-        // across on level 8"). Level 9 bounds those estimates from below only.
-        let shares_level_9s_mesh_across = s.grid.is_refined_y()
-            && s.info.level + 1 == fine_level
-            && matches!(output, Output::HMin | Output::MuBarSliding);
+        // across on level 8"). Level 9 bounds that estimate from below only. The top's
+        // friction, 80 % of whose error is along the rolling direction, keeps the bound
+        // (measured 1.92 times its distance).
+        let shares_level_9s_mesh_across =
+            s.grid.is_refined_y() && s.info.level + 1 == fine_level && output == Output::HMin;
         if shares_level_9s_mesh_across {
             continue;
         }

@@ -35,9 +35,8 @@ pub struct AccuracyTarget {
 /// the one the top serves). Level 7's `7y` (256 x 512) costs 0.41-0.71 of level 8's top time
 /// for level 8's minimum film; level 8's `8y` (512 x 1 024) takes the M 11 070 base from
 /// 27.5 % to 0.8 % off level 9 in its minimum film, and a member's whole cold solve takes 1.75
-/// times level 8's
-/// (docs/ACCURACY_NOTES.md, "The top refined across on level 8"). Below level 7 (the snapshot
-/// profile's levels 5-6) no top is measured.
+/// times level 8's (docs/ACCURACY_NOTES.md, "The top refined across on level 8"). Below level
+/// 7 (the snapshot profile's levels 5-6) no top is measured.
 pub const ACROSS_LEVELS: std::ops::RangeInclusive<u32> = 7..=8;
 
 /// The finest level whose top is added where its square levels give no estimate of the
