@@ -143,7 +143,8 @@ impl Outputs {
         }
     }
 
-    /// The accuracy study measures the central film and sliding `mu-bar` only.
+    /// The fields compared with the accuracy study: the central film and sliding `mu-bar`
+    /// (it has the minimum film in `H`, not in Moes units).
     fn of_measured(m: &LevelOutputs) -> Self {
         Outputs {
             h_central: m.h_central,

@@ -22,8 +22,15 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
         }
         match &r.outcome {
             Ok(m) => eprintln!(
-                "  {} level {}: Hc {:.5e}, mu-bar {:.4}, {} cycles, {:.3} s",
-                c.name, r.level, m.h_central, m.mu_bar, m.cycles, r.seconds
+                "  {} level {}: ended on {}, Hc {:.5e}, Hmin {:.5e}, mu-bar {:.4}, {} cycles, {:.3} s",
+                c.name,
+                r.level,
+                c.contact.points(m.level, m.across),
+                m.h_central,
+                m.h_min,
+                m.mu_bar,
+                m.cycles,
+                r.seconds
             ),
             Err(e) => eprintln!(
                 "  {} level {}: failed ({:.3} s): {e}",
@@ -41,6 +48,7 @@ pub fn run(args: &AccuracyArgs) -> Result<bool> {
         ),
         ("accuracy.svg", accuracy::picture::svg(&studies)?),
         ("accuracy_film.svg", accuracy::picture::film_svg(&studies)?),
+        ("accuracy_hmin.svg", accuracy::picture::h_min_svg(&studies)?),
     ];
     for (name, text) in &files {
         let path = args.out.join(name);

@@ -63,7 +63,8 @@ pub enum Command {
     /// What accuracy costs: representative cases at levels 4-8, error against a Richardson
     /// extrapolation of the grids' own values and wall time (figures/accuracy.csv,
     /// accuracy.svg for the friction, accuracy_film.svg for the central film as reported and
-    /// the grid's own, accuracy_levels.csv).
+    /// the grid's own, accuracy_hmin.svg for the minimum film of the designs, with the rule's
+    /// top refined across the rolling direction, accuracy_levels.csv).
     Accuracy(AccuracyArgs),
     /// List the targets.
     List,

@@ -15,16 +15,20 @@ struct LevelRow<'a> {
     h_central: Option<f64>,
     h_central_grid: Option<f64>,
     mu_bar_sliding: Option<f64>,
+    h_min: Option<f64>,
     reference: &'a str,
     h_central_ref: Option<f64>,
     mu_bar_ref: Option<f64>,
+    h_min_ref: Option<f64>,
     h_central_error: Option<f64>,
     h_central_grid_error: Option<f64>,
     mu_bar_error: Option<f64>,
+    h_min_error: Option<f64>,
     observed_order_h: Option<f64>,
     observed_order_mu: Option<f64>,
     order_used_h: Option<f64>,
     order_used_mu: Option<f64>,
+    order_used_h_min: Option<f64>,
     /// Finest-level cycles, or the length of a failure's residual history.
     cycles: usize,
     seconds: Decimals<3>,
@@ -53,13 +57,16 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
                 reference: r.map_or("", |r| r.kind),
                 h_central_ref: r.map(|r| r.h_central),
                 mu_bar_ref: r.map(|r| r.mu_bar),
+                h_min_ref: r.and_then(|r| r.h_min),
                 h_central_error: e.map(|e| e.0),
                 h_central_grid_error: s.grid_film_error(run),
                 mu_bar_error: e.map(|e| e.1),
+                h_min_error: s.h_min_error(run),
                 observed_order_h: order.map(|o| o.0),
                 observed_order_mu: order.map(|o| o.1),
                 order_used_h: used.map(|o| o.0),
                 order_used_mu: used.map(|o| o.1),
+                order_used_h_min: r.and_then(|r| r.order_used_h_min),
                 seconds: Decimals(run.seconds),
                 domain_h_central_change: domain.map(|d| d.0),
                 domain_mu_bar_change: domain.map(|d| d.1),
@@ -71,6 +78,7 @@ pub fn to_csv(studies: &[AccuracyResult]) -> String {
                     h_central: Some(m.h_central),
                     h_central_grid: Some(m.h_central_grid),
                     mu_bar_sliding: Some(m.mu_bar),
+                    h_min: Some(m.h_min),
                     cycles: m.cycles,
                     status: "ok".to_string(),
                     ..row
@@ -121,12 +129,16 @@ pub fn to_text(studies: &[AccuracyResult], recs: &[Recommendation]) -> String {
     let mut out = String::new();
     for s in studies {
         out.push_str(&format!("{} ({}): {}\n", s.name, s.kind, s.description));
+        let format_error = |e: Option<f64>| e.map(|e| format!("{e:.2e}")).unwrap_or_default();
         if let Some(r) = s.reference {
             out.push_str(&format!(
-                "  reference ({}): Hc {:.5e}, mu-bar {:.5}{}\n",
+                "  reference ({}): Hc {:.5e}, mu-bar {:.5}{}{}\n",
                 r.kind,
                 r.h_central,
                 r.mu_bar,
+                r.h_min
+                    .map(|h| format!(", Hmin {h:.5e}"))
+                    .unwrap_or_default(),
                 r.order
                     .map(|o| format!(", observed order Hc {:.2}, mu-bar {:.2}", o.0, o.1))
                     .unwrap_or_default()
@@ -136,22 +148,22 @@ pub fn to_text(studies: &[AccuracyResult], recs: &[Recommendation]) -> String {
             ));
         }
         out.push_str(
-            "  level  Hc           mu-bar     err Hc    (grid's)  err mu-bar  cycles  time (s)\n",
+            "  level  points     Hc           mu-bar     err Hc    (grid's)  err mu-bar  err Hmin  cycles  time (s)\n",
         );
-        for run in &s.levels {
+        for (run, points) in s.levels.iter().zip(&s.points) {
             match &run.outcome {
                 Ok(m) => {
                     let e = s.errors(run);
                     out.push_str(&format!(
-                        "  {:>5}  {:<11.5e}  {:<9.4}  {:>8}  {:>8}  {:>10}  {:>6}  {:>8.3}\n",
+                        "  {:>5}  {:<9}  {:<11.5e}  {:<9.4}  {:>8}  {:>8}  {:>10}  {:>8}  {:>6}  {:>8.3}\n",
                         run.level,
+                        points,
                         m.h_central,
                         m.mu_bar,
-                        e.map(|e| format!("{:.2e}", e.0)).unwrap_or_default(),
-                        s.grid_film_error(run)
-                            .map(|e| format!("{e:.2e}"))
-                            .unwrap_or_default(),
-                        e.map(|e| format!("{:.2e}", e.1)).unwrap_or_default(),
+                        format_error(e.map(|e| e.0)),
+                        format_error(s.grid_film_error(run)),
+                        format_error(e.map(|e| e.1)),
+                        format_error(s.h_min_error(run)),
                         m.cycles,
                         run.seconds
                     ));

@@ -15,10 +15,13 @@ enum Drawn {
     Film,
     /// The grid's own central film (a case whose film the rule tau-extrapolates).
     GridFilm,
+    /// The minimum film as the solve reports it (a top refined across's, where added).
+    MinFilm,
 }
 
 /// The series of `s` (the `i`-th series of its picture) for `drawn`: its levels' errors
-/// against their wall times, joined and labelled by level.
+/// against their wall times, joined and labelled by the level each solve ended on (`L7y`: level
+/// 7 with the top refined across the rolling direction).
 fn series(s: &AccuracyResult, i: usize, drawn: Drawn) -> Series {
     let (points, point_labels) = s
         .levels
@@ -28,8 +31,11 @@ fn series(s: &AccuracyResult, i: usize, drawn: Drawn) -> Series {
                 Drawn::Friction => s.errors(r)?.1,
                 Drawn::Film => s.errors(r)?.0,
                 Drawn::GridFilm => s.grid_film_error(r)?,
+                Drawn::MinFilm => s.h_min_error(r)?,
             };
-            Some(((r.seconds, error), format!("L{}", r.level)))
+            let m = r.outcome.as_ref().ok()?;
+            let across = if m.across { "y" } else { "" };
+            Some(((r.seconds, error), format!("L{}{across}", m.level)))
         })
         .unzip();
     // Point contacts by name alone (most are), the others with their kind: a short label
@@ -42,7 +48,7 @@ fn series(s: &AccuracyResult, i: usize, drawn: Drawn) -> Series {
     Series {
         label: match drawn {
             Drawn::GridFilm => format!("{name}, the grid's film"),
-            Drawn::Friction | Drawn::Film => name,
+            Drawn::Friction | Drawn::Film | Drawn::MinFilm => name,
         },
         points,
         marker: Marker::of_series(i),
@@ -111,6 +117,26 @@ pub fn film_svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
     render_svg(&fig).map_err(|e| PipelineError::plot("accuracy_film.svg", e))
 }
 
+/// `figures/accuracy_hmin.svg`: the minimum film's error as [`svg`] draws the friction's, for
+/// the designs (the inlet patch, the rule with its top refined across the rolling direction)
+/// and the cases they are measured against: what the adopted top buys against a uniform
+/// level. The other cases' minimum films are in `accuracy.csv`.
+pub fn h_min_svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
+    let twins: Vec<&str> = studies.iter().filter_map(|s| s.twin).collect();
+    let series = studies
+        .iter()
+        .filter(|s| s.twin.is_some() || twins.contains(&s.name))
+        .enumerate()
+        .map(|(i, s)| series(s, i, Drawn::MinFilm))
+        .collect();
+    let fig = picture(
+        "The minimum film: uniform levels and the designs (L7y = level 7 refined across)",
+        "error of Hmin vs Richardson extrapolation".into(),
+        series,
+    );
+    render_svg(&fig).map_err(|e| PipelineError::plot("accuracy_hmin.svg", e))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -165,6 +191,32 @@ mod tests {
             (1, 1)
         );
         assert!(extrapolated.contains("t, the grid") && !plain.contains("t, the grid"));
+    }
+
+    #[test]
+    fn the_minimum_film_picture_draws_the_designs_beside_their_cases_by_the_grid_they_ended_on() {
+        let x = |n: u32| 2.0 + 3.0 * 4f64.powi(-(n as i32));
+        let levels: Vec<_> = (5..=7).map(|n| run(n, x(n), x(n))).collect();
+        let alone = study(levels.clone());
+        let mut case = study(levels.clone());
+        case.name = "case";
+        // The rule from level 7: ended on level 7's top refined across, its minimum film 1e-3
+        // from the reference's (1); measured against the case's reference.
+        let mut rule = study(vec![levels[2].clone()]);
+        (rule.name, rule.twin, rule.reference) = ("case-rule", Some("case"), case.reference);
+        if let Ok(m) = &mut rule.levels[0].outcome {
+            (m.across, m.h_min) = (true, 1.001);
+        }
+        assert!((rule.h_min_error(&rule.levels[0]).unwrap() - 1e-3).abs() < 1e-12);
+        let svg = h_min_svg(&[alone, case, rule]).unwrap();
+        let labelled = |l: &str| svg.lines().filter(|line| line.trim() == l).count();
+        // The case through its levels and the design's one point, not the case without one.
+        assert_eq!((labelled("L7y"), labelled("L7"), labelled("L6")), (1, 1, 1));
+        // Legend entries are lines of their own.
+        assert_eq!(
+            (labelled("case-rule"), labelled("case"), labelled("t")),
+            (1, 1, 0)
+        );
     }
 
     fn svg_film(levels: &[crate::paper::accuracy::LevelRun]) -> String {

@@ -1,7 +1,9 @@
 //! The reference a case's errors are measured against: a Richardson extrapolation of its
 //! finest converged levels (the module above says how), read from the grids' own values. A
 //! central film the rule reports tau-extrapolated is of higher order than its level, so the
-//! levels' sequence is the grids' films, and the reported one is measured against it.
+//! levels' sequence is the grids' films, and the reported one is measured against it. The
+//! minimum film is extrapolated from the same levels (a case of the study solves square
+//! levels, whose minimum film is the grid's own), where they give an estimate.
 
 use super::{LevelOutputs, LevelRun, Reference};
 use crate::solver::richardson::{estimate, FIRST_ORDER};
@@ -23,6 +25,8 @@ pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
         return Some(Reference {
             h_central: f.h_central_grid,
             mu_bar: f.mu_bar,
+            h_min: Some(f.h_min),
+            order_used_h_min: None,
             kind: "finest",
             order: None,
             order_used: None,
@@ -34,6 +38,8 @@ pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
         return Some(Reference {
             h_central: extrapolate(c.h_central_grid, f.h_central_grid, 2.0),
             mu_bar: extrapolate(c.mu_bar, f.mu_bar, 2.0),
+            h_min: Some(extrapolate(c.h_min, f.h_min, 2.0)),
+            order_used_h_min: Some(2.0),
             kind: "richardson",
             order: None,
             order_used: Some((2.0, 2.0)),
@@ -45,9 +51,12 @@ pub fn reference(levels: &[LevelRun]) -> Option<Reference> {
         FIRST_ORDER,
     )?;
     let mu = estimate(&[a.mu_bar, c.mu_bar, f.mu_bar], FIRST_ORDER)?;
+    let h_min = estimate(&[a.h_min, c.h_min, f.h_min], FIRST_ORDER);
     Some(Reference {
         h_central: film.extrapolated,
         mu_bar: mu.extrapolated,
+        h_min: h_min.map(|e| e.extrapolated),
+        order_used_h_min: h_min.map(|e| e.order_used),
         kind: "observed-order",
         order: film.order.zip(mu.order),
         order_used: Some((film.order_used, mu.order_used)),
