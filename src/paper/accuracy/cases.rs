@@ -182,18 +182,14 @@ impl AccuracyCase {
     }
 }
 
-/// The parameters the figure targets use (the rule, [`point::Params::for_problem`]),
-/// without the film's refinement: a point of the study is a solve on its own level (a
-/// figure's closed film is re-solved one level finer; here the level fails, and its point is
-/// left out, rather than a finer level's time and error being shown under its name).
+/// The parameters the figure targets use (the rule, [`point::Params::for_problem`]) on the
+/// level given alone, as `repro solve --exact-level` solves it ([`point::Params::exact_level`]):
+/// a point of the study is a solve on its own square level (a figure's closed film is
+/// re-solved one level finer; here the level fails, and its point is left out, rather than a
+/// finer level's time and error being shown under its name). The rule itself is a design of
+/// the study ([`rule_params`]).
 pub fn pipeline_params(problem: &Problem, level: u32) -> point::Params {
-    let mut params = point::Params::for_problem(problem, level);
-    params.accuracy.refinement_levels = 0;
-    // Nor a top refined across the rolling direction: the study's levels are square.
-    if let Some(target) = &mut params.accuracy.target {
-        target.h_min = None;
-    }
-    params
+    point::Params::for_problem(problem, level).exact_level()
 }
 
 /// The rule itself ([`point::Params::for_problem`]), as a figure solves a case from the

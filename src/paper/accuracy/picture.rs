@@ -21,11 +21,19 @@ enum Drawn {
 
 /// The series of `s` (the `i`-th series of its picture) for `drawn`: its levels' errors
 /// against their wall times, joined and labelled by the level each solve ended on (`L7y`: level
-/// 7 with the top refined across the rolling direction).
+/// 7 with the top refined across the rolling direction). A solve the rule refined to a level
+/// the series also solves from is left out: the two end on one grid, one label over the other
+/// (`accuracy.csv` has both).
 fn series(s: &AccuracyResult, i: usize, drawn: Drawn) -> Series {
+    let asked: Vec<u32> = s.levels.iter().map(|r| r.level).collect();
     let (points, point_labels) = s
         .levels
         .iter()
+        .filter(|r| {
+            r.outcome
+                .as_ref()
+                .is_ok_and(|m| m.level == r.level || !asked.contains(&m.level))
+        })
         .filter_map(|r| {
             let error = match drawn {
                 Drawn::Friction => s.errors(r)?.1,

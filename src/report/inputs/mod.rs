@@ -208,8 +208,7 @@ impl SolveInputs {
         params.newton.steps = self.newton_steps;
         params.friction.rolling = self.rolling_friction;
         if self.exact_level {
-            params.accuracy.target = None;
-            params.accuracy.refinement_levels = 0;
+            params = params.exact_level();
         }
         if let Some(patch) = self.patch {
             if params.nested {

@@ -26,7 +26,8 @@ use super::cycles::{level_number, stop_outputs};
 use super::edge::settle_edge;
 use super::level::LevelFields;
 use super::multigrid::Hierarchy;
-use super::stopping::{Known, WarmStop};
+use super::stopping::Known;
+use super::warm::from_converged;
 use super::{Params, MIN_LEVEL};
 use crate::solver::output::{LadderStop, LevelValues, Method, Output, OutputErrors, Progress};
 use std::time::Instant;
@@ -136,28 +137,19 @@ fn converge_rung(
         vec![None]
     };
     starts.into_iter().find_map(|start| {
-        match start {
-            Some(w) => {
-                mg.levels[k].p.copy_from_slice(&w.p);
-                mg.delta = w.delta;
-            }
+        // A converged start's outputs and residual stop its cycles as a warm start's do.
+        let stop = match start {
+            Some(w) => from_converged(mg, k, (&w.p, w.delta), w.residual, params),
             None => {
                 inject(mg, k);
                 mg.delta = delta;
+                mg.make_top(k);
+                mg.refresh(k);
+                None
             }
-        }
-        mg.make_top(k);
-        // A converged start's outputs and residual stop its cycles as a warm start's do; its
-        // outputs are read from the film of its own pressure (the level's film and
-        // coefficients were those of its last visit as a coarse grid).
-        mg.refresh(k);
+        };
         let known = Known {
-            start: start.and_then(|w| {
-                Some(WarmStop {
-                    outputs: stop_outputs(mg, k, params),
-                    residual: w.residual?,
-                })
-            }),
+            start: stop,
             finer: Some(finer),
         };
         // Its tallies are not the solve's: the ladder reports its time, not its cycles.

@@ -301,19 +301,26 @@ impl Default for AccuracyParams {
 const KRYLOV_RESTART: usize = 60;
 
 impl Params {
-    /// These parameters solving their level alone, on one grid: no nested domains, no patch,
-    /// no error estimate, no refinement (nor its target), no film check and no
-    /// tau-extrapolation. The composite
-    /// grid's levels, and the studies that compare it with uniform levels.
-    pub fn level_alone(mut self) -> Self {
-        self.nested = false;
-        self.patch = None;
-        self.accuracy.error_levels = 0;
+    /// These parameters solving the level asked for and no other: no finer level for the
+    /// accuracy target or a closed film, and no top refined across the rolling direction (the
+    /// target dropped). `repro solve --exact-level` and the level study's points.
+    pub fn exact_level(mut self) -> Self {
         self.accuracy.target = None;
         self.accuracy.refinement_levels = 0;
-        self.accuracy.require_positive_film = false;
-        self.accuracy.tau_extrapolation = false;
         self
+    }
+
+    /// These parameters solving their level alone, on one grid: [`Params::exact_level`]
+    /// without nested domains, patch, error estimate, film check or tau-extrapolation. The
+    /// composite grid's levels, and the studies that compare it with uniform levels.
+    pub fn level_alone(self) -> Self {
+        let mut this = self.exact_level();
+        this.nested = false;
+        this.patch = None;
+        this.accuracy.error_levels = 0;
+        this.accuracy.require_positive_film = false;
+        this.accuracy.tau_extrapolation = false;
+        this
     }
 
     /// Default parameters at `level`, on the paper's domain whatever the case: for tests and

@@ -19,16 +19,15 @@ use super::converge::Tally;
 use super::converge::{converge_level, How};
 use super::covering::{self, Covering, Outputs};
 use super::cycles::level_number;
-use super::cycles::stop_outputs;
 use super::edge::settle_top;
 use super::level::LOAD;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
 use super::newton::HandedFactor;
 use super::refine::{ACROSS_LEVELS, ACROSS_UNESTIMATED_LEVEL};
-use super::stopping::{Known, WarmStop};
+use super::stopping::Known;
 use super::tau::TauExtrapolated;
-use super::warm::AcrossStart;
+use super::warm::{from_converged, AcrossStart};
 use super::{
     cold, friction, ladder, refine, tau, warm, CoarseSolution, Params, PointSolution, Start,
     MAX_LEVEL, MIN_LEVEL,
@@ -304,19 +303,10 @@ impl Covering for Uniform<'_> {
             .filter(|s| s.grid == self.mg.levels[k].grid);
         let (mg, params) = (&mut self.mg, &self.params);
         let known = match start {
-            Some(s) => {
-                mg.levels[k].p.copy_from_slice(&s.p);
-                mg.delta = s.delta;
-                mg.make_top(k);
-                mg.refresh(k);
-                Known {
-                    start: Some(WarmStop {
-                        outputs: stop_outputs(mg, k, params),
-                        residual: s.residual,
-                    }),
-                    finer: None,
-                }
-            }
+            Some(s) => Known {
+                start: from_converged(mg, k, (&s.p, s.delta), Some(s.residual), params),
+                finer: None,
+            },
             None => {
                 mg.make_top(k);
                 mg.interpolate(k);

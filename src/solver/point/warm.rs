@@ -151,6 +151,30 @@ pub(super) fn params_at(params: &Params, level: u32) -> Params {
     at
 }
 
+/// Level `k` of `mg` made its top from a converged pressure `p` and film constant `delta`: the
+/// pressure first, then the edge (the far field is put on the boundary for `delta`), and the
+/// film and coefficients of `p` (those of the level's last visit as a coarse grid, or none, are
+/// not its own). Returns the warm stop its cycles compare with, its outputs read from that
+/// film, where the solution's last `residual` is known ([`WarmStop`]): a member's finest
+/// level from its base's, a ladder's rung from the base's same level, a top refined across
+/// the rolling direction from the base's.
+pub(super) fn from_converged(
+    mg: &mut Hierarchy,
+    k: usize,
+    (p, delta): (&[f64], f64),
+    residual: Option<f64>,
+    params: &Params,
+) -> Option<WarmStop> {
+    mg.levels[k].p.copy_from_slice(p);
+    mg.delta = delta;
+    mg.make_top(k);
+    mg.refresh(k);
+    residual.map(|residual| WarmStop {
+        outputs: stop_outputs(mg, k, params),
+        residual,
+    })
+}
+
 /// Converges `problem` on `start`'s level from it (module documentation); `None` where it
 /// fails, its residuals appended to `tried`.
 pub(super) fn converge(
@@ -166,17 +190,15 @@ pub(super) fn converge(
     // The start's factor (its grid is the top level's: `Start::fits`) preconditions the
     // first Newton step where one is taken.
     mg.keep_factor(top, start.factor.as_ref().map(|f| f.copy()));
-    // The pressure first, then the edge: the far field is put on the boundary for the
-    // start's `Delta`.
-    mg.levels[top].p.copy_from_slice(&start.p);
-    mg.make_top(top);
-    // Its outputs are read from the film of the start's pressure.
-    mg.refresh(top);
+    let stop = from_converged(
+        &mut mg,
+        top,
+        (&start.p, start.delta),
+        Some(start.residual),
+        params,
+    );
     let known = Known {
-        start: Some(WarmStop {
-            outputs: stop_outputs(&mg, top, params),
-            residual: start.residual,
-        }),
+        start: stop,
         finer: None,
     };
     let mut tally = Tally::default();
