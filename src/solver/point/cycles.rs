@@ -4,7 +4,7 @@
 use super::far_field::{FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use super::level::{self, LOAD};
 use super::multigrid::Hierarchy;
-use super::stopping::{self, Known};
+use super::stopping::{self, Known, WarmStop};
 use super::{friction, Edge, Params};
 use crate::solver::output::{mean_change, Progress, Step};
 
@@ -298,6 +298,30 @@ impl Alternation {
 
 /// Residual growth over the best cycle that stops the solve as diverged.
 const DIVERGENCE_FACTOR: f64 = 1e3;
+
+/// Level `k` of `mg` made its top from a converged pressure `p` and film constant `delta`: the
+/// pressure first, then the edge (the far field is put on the boundary for `delta`), and the
+/// film and coefficients of `p` (those of the level's last visit as a coarse grid, or none, are
+/// not its own). Returns the warm stop its cycles compare with, its outputs read from that
+/// film, where the solution's last `residual` is known ([`WarmStop`]): a member's finest
+/// level from its base's, a ladder's rung from the base's same level, a top refined across
+/// the rolling direction from the base's.
+pub(super) fn from_converged(
+    mg: &mut Hierarchy,
+    k: usize,
+    (p, delta): (&[f64], f64),
+    residual: Option<f64>,
+    params: &Params,
+) -> Option<WarmStop> {
+    mg.levels[k].p.copy_from_slice(p);
+    mg.delta = delta;
+    mg.make_top(k);
+    mg.refresh(k);
+    residual.map(|residual| WarmStop {
+        outputs: stop_outputs(mg, k, params),
+        residual,
+    })
+}
 
 /// Central and minimum film, sliding and rolling `mu-bar` (0 where it is not computed) of
 /// level `k`: what the outputs' stopping rule reads ([`stopping::OutputHistory`]).

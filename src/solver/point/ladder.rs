@@ -22,12 +22,11 @@
 //! level 6; docs/ACCURACY_NOTES.md, "Where a solve's time goes").
 
 use super::converge::{converge_level, How, Tally};
-use super::cycles::{level_number, stop_outputs};
+use super::cycles::{from_converged, level_number, stop_outputs};
 use super::edge::settle_edge;
 use super::level::LevelFields;
 use super::multigrid::Hierarchy;
 use super::stopping::Known;
-use super::warm::from_converged;
 use super::{Params, MIN_LEVEL};
 use crate::solver::output::{LadderStop, LevelValues, Method, Output, OutputErrors, Progress};
 use std::time::Instant;

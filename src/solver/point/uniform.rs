@@ -18,7 +18,7 @@ use super::cold::Converged;
 use super::converge::Tally;
 use super::converge::{converge_level, How};
 use super::covering::{self, Covering, Outputs};
-use super::cycles::level_number;
+use super::cycles::{from_converged, level_number};
 use super::edge::settle_top;
 use super::level::LOAD;
 use super::multigrid::Hierarchy;
@@ -27,7 +27,7 @@ use super::newton::HandedFactor;
 use super::refine::{ACROSS_LEVELS, ACROSS_UNESTIMATED_LEVEL};
 use super::stopping::Known;
 use super::tau::TauExtrapolated;
-use super::warm::{from_converged, AcrossStart};
+use super::warm::AcrossStart;
 use super::{
     cold, friction, ladder, refine, tau, warm, CoarseSolution, Params, PointSolution, Start,
     MAX_LEVEL, MIN_LEVEL,

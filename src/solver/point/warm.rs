@@ -20,10 +20,10 @@
 
 use super::cold::Converged;
 use super::converge::{converge_level, How, Tally};
-use super::cycles::stop_outputs;
+use super::cycles::from_converged;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
-use super::stopping::{Known, WarmStop};
+use super::stopping::Known;
 use super::{Params, MAX_LEVEL};
 use crate::physics::case::Problem;
 use crate::solver::grid::Grid;
@@ -149,30 +149,6 @@ pub(super) fn params_at(params: &Params, level: u32) -> Params {
         .refinement_levels
         .saturating_sub(level - params.level);
     at
-}
-
-/// Level `k` of `mg` made its top from a converged pressure `p` and film constant `delta`: the
-/// pressure first, then the edge (the far field is put on the boundary for `delta`), and the
-/// film and coefficients of `p` (those of the level's last visit as a coarse grid, or none, are
-/// not its own). Returns the warm stop its cycles compare with, its outputs read from that
-/// film, where the solution's last `residual` is known ([`WarmStop`]): a member's finest
-/// level from its base's, a ladder's rung from the base's same level, a top refined across
-/// the rolling direction from the base's.
-pub(super) fn from_converged(
-    mg: &mut Hierarchy,
-    k: usize,
-    (p, delta): (&[f64], f64),
-    residual: Option<f64>,
-    params: &Params,
-) -> Option<WarmStop> {
-    mg.levels[k].p.copy_from_slice(p);
-    mg.delta = delta;
-    mg.make_top(k);
-    mg.refresh(k);
-    residual.map(|residual| WarmStop {
-        outputs: stop_outputs(mg, k, params),
-        residual,
-    })
 }
 
 /// Converges `problem` on `start`'s level from it (module documentation); `None` where it
