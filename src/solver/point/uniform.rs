@@ -272,8 +272,8 @@ impl Covering for Uniform<'_> {
     }
 
     /// On a level of [`ACROSS_LEVELS`], whatever refinement budget is left: the target
-    /// asks for it (none on an exact level, nor at a study's point, whose minimum-film bound
-    /// is cleared).
+    /// asks for it (none on an exact level, [`super::Params::exact_level`], which the level
+    /// study's points are too).
     /// Above [`ACROSS_UNESTIMATED_LEVEL`], only where the square levels estimate the
     /// minimum film.
     fn may_refine_across(&self, errors: &OutputErrors) -> bool {
