@@ -84,9 +84,14 @@ impl SolveError {
 /// What a collapsed film asks of the grid.
 fn level_advice(needed: Option<u32>, finest: u32) -> String {
     match needed {
-        Some(n) if n <= finest => {
+        Some(n) if n < finest => {
             format!("the grid cannot resolve this film; level {n} is estimated to resolve it (--level {n})")
         }
+        Some(n) if n == finest => format!(
+            "the grid cannot resolve this film; level {n}, the solver's finest, is estimated to \
+             resolve it (--level {n}), but on the heaviest contacts (M above about 3e4 at small \
+             L) its Newton-Krylov finish has not converged (docs/hard-cases.md)"
+        ),
         Some(n) => format!(
             "the grid cannot resolve this film; level {n} is estimated to resolve it, beyond \
              the solver's finest level {finest}"
@@ -100,4 +105,21 @@ fn format_history(h: &[f64]) -> String {
         .map(|r| format!("{r:.2e}"))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::level_advice;
+
+    /// Below the finest level the advice names the level to ask for; at the finest it says
+    /// that level 9 has not converged on the heaviest contacts (the M 35 900 thin film,
+    /// docs/hard-cases.md), beyond it that the solver has no such level.
+    #[test]
+    fn the_advice_says_where_the_level_it_names_has_not_converged() {
+        assert!(level_advice(Some(8), 9).ends_with("(--level 8)"));
+        let finest = level_advice(Some(9), 9);
+        assert!(finest.contains("(--level 9)") && finest.contains("has not converged"));
+        assert!(level_advice(Some(10), 9).contains("beyond the solver's finest level 9"));
+        assert!(level_advice(None, 9).contains("a finer level may resolve it"));
+    }
 }
