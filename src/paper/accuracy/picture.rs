@@ -113,18 +113,20 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
 /// `figures/accuracy_film.svg`: the central film's error as [`svg`] draws the friction's, for
 /// the cases whose film the rule tau-extrapolates at some level: the film each level reports
 /// and, beside it, the grid's own, so that the extrapolation's gain and cost show against the
-/// uniform levels; and the designs measured against those cases (the inlet patch). The
-/// other cases report their grids' films (nested domains, Newton-Krylov levels, the line
+/// uniform levels; and the designs measured against those cases (the inlet patch, the rule),
+/// their reported film alone. The other cases report their grids' films (nested domains, Newton-Krylov levels, the line
 /// contact), which `accuracy.csv` has.
 pub fn film_svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
     let mut series: Vec<Series> = Vec::new();
     for s in studies {
         let design = s.reference.is_some_and(|r| r.kind == TWIN_REFERENCE);
-        if s.extrapolates_film() {
+        if design {
+            // Its reported film alone: its grid's own is about its case's (the rule's top
+            // keeps its level's film) or the reported one (the inlet patch's).
+            series.push(self::series(s, studies, series.len(), Drawn::Film));
+        } else if s.extrapolates_film() {
             series.push(self::series(s, studies, series.len(), Drawn::Film));
             series.push(self::series(s, studies, series.len(), Drawn::GridFilm));
-        } else if design {
-            series.push(self::series(s, studies, series.len(), Drawn::Film));
         }
     }
     let fig = picture(
@@ -209,6 +211,26 @@ mod tests {
             (1, 1)
         );
         assert!(extrapolated.contains("t, the grid") && !plain.contains("t, the grid"));
+        // A design measured against the case, extrapolated as well: its reported film alone,
+        // a third series beside the case's two.
+        let case = study(levels.clone());
+        let mut design = study(levels);
+        design.name = "d";
+        design.twin = Some("t");
+        design.reference = case.reference.map(|r| crate::paper::accuracy::Reference {
+            kind: TWIN_REFERENCE,
+            ..r
+        });
+        let both = film_svg(&[case, design]).unwrap();
+        assert_eq!(
+            (
+                joined(&both, "#0072B2"),
+                joined(&both, "#D55E00"),
+                joined(&both, "#009E73")
+            ),
+            (1, 1, 1)
+        );
+        assert!(!both.contains("d, the grid"));
     }
 
     #[test]
