@@ -1,7 +1,7 @@
 //! `accuracy.svg` of `repro accuracy`: what accuracy costs, the error of each level against
 //! its wall time.
 
-use crate::paper::accuracy::{AccuracyResult, LevelOutputs, LevelRun, TWIN_REFERENCE};
+use crate::paper::accuracy::{AccuracyResult, LevelOutputs, LevelRun};
 use crate::paper::picture::MU_BAR;
 use crate::pipeline::error::PipelineError;
 use crate::plot::{render_svg, Figure, Marker, Scale, Series};
@@ -39,19 +39,17 @@ fn series(s: &AccuracyResult, studies: &[AccuracyResult], i: usize, drawn: Drawn
     let (points, point_labels) = s
         .levels
         .iter()
-        .filter(|r| {
-            r.outcome.as_ref().is_ok_and(|m| {
-                (m.level == r.level || !asked.contains(&m.level)) && !the_twins(r, m)
-            })
-        })
         .filter_map(|r| {
+            let m = r.outcome.as_ref().ok()?;
+            if (m.level != r.level && asked.contains(&m.level)) || the_twins(r, m) {
+                return None;
+            }
             let error = match drawn {
                 Drawn::Friction => s.errors(r)?.1,
                 Drawn::Film => s.errors(r)?.0,
                 Drawn::GridFilm => s.grid_film_error(r)?,
                 Drawn::MinFilm => s.h_min_error(r)?,
             };
-            let m = r.outcome.as_ref().ok()?;
             let across = if m.across { "y" } else { "" };
             Some(((r.seconds, error), format!("L{}{across}", m.level)))
         })
@@ -114,13 +112,12 @@ pub fn svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
 /// the cases whose film the rule tau-extrapolates at some level: the film each level reports
 /// and, beside it, the grid's own, so that the extrapolation's gain and cost show against the
 /// uniform levels; and the designs measured against those cases (the inlet patch, the rule),
-/// their reported film alone. The other cases report their grids' films (nested domains, Newton-Krylov levels, the line
-/// contact), which `accuracy.csv` has.
+/// their reported film alone. The other cases report their grids' films (nested domains,
+/// Newton-Krylov levels, the line contact), which `accuracy.csv` has.
 pub fn film_svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
     let mut series: Vec<Series> = Vec::new();
     for s in studies {
-        let design = s.reference.is_some_and(|r| r.kind == TWIN_REFERENCE);
-        if design {
+        if s.twin.is_some() {
             // Its reported film alone: its grid's own is about its case's (the rule's top
             // keeps its level's film) or the reported one (the inlet patch's).
             series.push(self::series(s, studies, series.len(), Drawn::Film));
@@ -161,6 +158,7 @@ pub fn h_min_svg(studies: &[AccuracyResult]) -> Result<String, PipelineError> {
 mod tests {
     use super::*;
     use crate::paper::accuracy::tests::{run, study};
+    use crate::paper::accuracy::TWIN_REFERENCE;
     use crate::solver::output::SolveError;
 
     #[test]
