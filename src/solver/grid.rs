@@ -227,6 +227,11 @@ impl Grid {
         }
     }
 
+    /// The level of a grid of [`Grid::level`] (`2^(level+1)` intervals along `X`).
+    pub fn level_number(&self) -> u32 {
+        self.nx.trailing_zeros() - 1
+    }
+
     /// The next coarser grid (every second node).
     pub fn coarser(&self) -> Self {
         Grid {

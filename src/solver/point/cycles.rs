@@ -105,7 +105,7 @@ pub(super) fn cycle_progress(
 
 /// The level number of a grid (`2^(level+1)` intervals along `X`).
 pub(super) fn level_number(level: &level::LevelFields) -> u32 {
-    level.grid.nx.trailing_zeros() - 1
+    level.grid.level_number()
 }
 
 /// V-cycles on level `k` as the top of the hierarchy until they converge, diverge, stall

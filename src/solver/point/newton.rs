@@ -145,8 +145,13 @@ fn fresh(
     newton: &NewtonParams,
     storage: LuStorage,
 ) -> Option<Preconditioner> {
-    jac.preconditioner(level, newton.box_radius, true, storage)
-        .map(|lu| Preconditioner::fresh(lu, &jac.active, &jac.cavitating))
+    jac.preconditioner(
+        level,
+        newton.box_radius_on(level.grid.level_number()),
+        true,
+        storage,
+    )
+    .map(|lu| Preconditioner::fresh(lu, &jac.active, &jac.cavitating))
 }
 
 /// Newton steps on `level` (its own equations: the top of the hierarchy) from its current

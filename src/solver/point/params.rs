@@ -195,10 +195,16 @@ pub struct NewtonParams {
     /// cases stall rather than diverge, and a Newton step costs milliseconds.
     pub start_level: u32,
     /// Half-width in cells of the box of elastic-kernel entries the finish's sparse
-    /// preconditioner keeps. Default 2 (5 x 5): the feasibility study of the 5P4E Newton
-    /// systems measured 8 GMRES iterations to 1e-2 at level 7 with it, none converging with
-    /// a 3 x 3 box.
+    /// preconditioner keeps, on levels up to 8. Default 2 (5 x 5): the feasibility study of
+    /// the 5P4E Newton systems measured 8 GMRES iterations to 1e-2 at level 7 with it, none
+    /// converging with a 3 x 3 box.
     pub box_radius: usize,
+    /// The same on level 9 ([`super::MAX_LEVEL`]), where a box of `box_radius` cells reaches
+    /// half as far as on level 8. Default 3 (7 x 7): on the M 35 900, L 2.55 thin film the
+    /// 5 x 5 box left GMRES at its 200-iteration cap every Newton step and the residual at
+    /// 1.5e-2; with 7 x 7 one step of 33 iterations converged level 9 (13 GB). A 9 x 9 box,
+    /// level 8's reach, passed 21 GB before its first step (docs/hard-cases.md).
+    pub finest_box_radius: usize,
     /// The GMRES solves of its linear systems.
     pub krylov: KrylovParams,
 }
@@ -209,10 +215,23 @@ impl Default for NewtonParams {
             steps: 30,
             start_level: 5,
             box_radius: 2,
+            finest_box_radius: 3,
             krylov: KrylovParams {
                 restart: KRYLOV_RESTART,
                 max_iterations: 200,
             },
+        }
+    }
+}
+
+impl NewtonParams {
+    /// The preconditioner's box half-width on `level` ([`NewtonParams::box_radius`],
+    /// [`NewtonParams::finest_box_radius`]).
+    pub fn box_radius_on(&self, level: u32) -> usize {
+        if level >= super::MAX_LEVEL {
+            self.finest_box_radius
+        } else {
+            self.box_radius
         }
     }
 }

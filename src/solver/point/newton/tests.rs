@@ -172,6 +172,7 @@ fn a_step_does_not_depend_on_the_coefficients_left_on_the_level() {
     let newton = NewtonParams {
         steps: 1,
         box_radius: 2,
+        finest_box_radius: 3,
         krylov: gmres::KrylovParams {
             restart: 30,
             max_iterations: 60,
