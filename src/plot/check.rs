@@ -1,9 +1,9 @@
 //! The layout check: where a rendered figure put its text boxes (title, legend, notes, point
 //! labels) and its markers, and what is wrong with that ([`Layout::problems`]): a box off the
-//! canvas, two boxes over each other, a legend or note over a data marker.
+//! canvas, two boxes over each other (two point labels included), a legend, note or point
+//! label over a data marker.
 
 use super::layout::Rect;
-use super::style::MARKER_R;
 use super::{HEIGHT, WIDTH};
 
 /// The margin, in pixels, a box keeps from the canvas's edge.
@@ -53,20 +53,21 @@ impl Layout {
                 out.push(format!("{name} {r:?} leaves the canvas"));
             }
         }
-        // Each box against the ones after it; point labels among themselves are left to the
-        // figure (a label may sit close to its neighbour's point in a dense family).
+        // Each box against the ones after it, point labels among themselves too.
         for (i, (a, ra)) in named.iter().enumerate() {
             for (b, rb) in &named[i + 1..] {
-                let both_labels = *a == "point label" && *b == "point label";
-                if !both_labels && ra.overlaps(rb) {
+                if ra.overlaps(rb) {
                     out.push(format!("{a} {ra:?} overlaps {b} {rb:?}"));
                 }
             }
         }
-        for (name, r) in [("legend", self.legend), ("notes", self.notes)] {
-            let Some(r) = r else { continue };
-            let grown = r.grow(MARKER_R);
-            let covered = self.markers.iter().filter(|m| grown.contains(**m)).count();
+        // A point label is placed with a gap from its own marker (`place`), so every marker
+        // it covers is another point's.
+        let over_data = named
+            .iter()
+            .filter(|(n, _)| matches!(*n, "legend" | "notes" | "point label"));
+        for (name, r) in over_data {
+            let covered = self.markers.iter().filter(|m| r.covers_marker(**m)).count();
             if covered > 0 {
                 out.push(format!("{name} {r:?} covers {covered} data markers"));
             }
@@ -116,6 +117,34 @@ mod tests {
             ..fig6
         };
         assert_eq!(fixed.problems(), Vec::<String>::new());
+    }
+
+    #[test]
+    fn point_labels_over_each_other_or_over_a_marker_are_reported() {
+        // Three labels of 18 x 17 px (an "L7" at 14 px), the second's top at `second_top`,
+        // and markers at their left, the third's at `third_x`.
+        let layout = |second_top: i32, third_x: i32| Layout {
+            labels: vec![
+                rect(406, 394, 424, 411),
+                rect(406, second_top, 424, second_top + 17),
+                rect(500, 394, 518, 411),
+            ],
+            markers: vec![(400, 400), (400, 392), (third_x, 400)],
+            ..Layout::default()
+        };
+        // The second 8 px above the first (over it), and the marker 4 px left of the third
+        // (the marker's radius: over it).
+        assert_eq!(
+            layout(386, 496).problems(),
+            [
+                "point label Rect { x0: 406, x1: 424, y0: 394, y1: 411 } overlaps point label \
+                 Rect { x0: 406, x1: 424, y0: 386, y1: 403 }",
+                "point label Rect { x0: 500, x1: 518, y0: 394, y1: 411 } covers 1 data markers",
+            ]
+        );
+        // The second 25 px above the first (clear of it and of the markers, each 6 px left
+        // of its box), and the marker 5 px left of the third (one more than the radius).
+        assert_eq!(layout(369, 495).problems(), Vec::<String>::new());
     }
 
     #[test]

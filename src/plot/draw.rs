@@ -9,9 +9,9 @@ use super::legend::{
     MARGIN, MARGIN_RIGHT,
 };
 use super::marker::{BarEnd, ErrorBar, Glyph, Lines};
+use super::place::Ink;
 use super::style::{
-    curve_color, curve_dashes, drawing, font, series_color, DESC_PX, MARKER_R, NOTE_PX, TICK_PX,
-    TITLE_PX,
+    curve_color, curve_dashes, drawing, font, series_color, DESC_PX, NOTE_PX, TICK_PX, TITLE_PX,
 };
 use super::text::{apply_markup, text_width};
 use super::{Figure, PlotError, Rendered, Scale, HEIGHT, WIDTH};
@@ -351,76 +351,28 @@ fn draw(
             .map_err(drawing)?;
         }
     }
-    let mut label_boxes = Vec::new();
-    for (i, pts) in series.iter().enumerate() {
-        let (marker, color) = (fig.series[i].marker, series_color(i));
-        for (&at, l) in pts.iter().zip(&data.labels[i]) {
-            if !l.is_empty() {
-                let (x, y) = chart.backend_coord(&at);
-                let (x0, y0) = (x + MARKER_R + 2, y - (MARKER_R + 2));
-                label_boxes.push(Rect {
-                    x0,
-                    x1: x0 + text_width(l, NOTE_PX).ceil() as i32,
-                    y0,
-                    y1: y0 + (NOTE_PX * 1.2).ceil() as i32,
-                });
-            }
-        }
-        if fig.series[i].joined && pts.len() > 1 {
-            let style = ShapeStyle::from(&color).stroke_width(1);
-            chart
-                .draw_series(std::iter::once(PathElement::new(pts.clone(), style)))
-                .map_err(drawing)?;
-        }
-        chart
-            .draw_series(pts.iter().map(|&at| Glyph { at, marker, color }))
-            .map_err(drawing)?;
-        let label_style = font(NOTE_PX).color(&color);
-        chart
-            .draw_series(
-                pts.iter()
-                    .zip(&data.labels[i])
-                    .filter(|(_, l)| !l.is_empty())
-                    .map(|(&at, l)| {
-                        EmptyElement::at(at)
-                            + Text::new(
-                                l.clone(),
-                                (MARKER_R + 2, -(MARKER_R + 2)),
-                                label_style.clone(),
-                            )
-                    }),
-            )
-            .map_err(drawing)?;
-    }
-
-    let pixel_points: Vec<(i32, i32)> = series
+    let joined = series
         .iter()
-        .flatten()
-        .map(|p| chart.backend_coord(p))
-        .collect();
-    let pixel_lines: Vec<Vec<(i32, i32)>> = curves
-        .iter()
-        .flatten()
-        .map(|piece| piece.iter().map(|p| chart.backend_coord(p)).collect())
-        .collect();
-    let crowding = |r: &Rect| -> usize {
-        let grown = r.grow(MARKER_R + 2);
-        let points = pixel_points.iter().filter(|p| grown.contains(**p)).count();
-        // A bar (its vertical line; the caps are at its ends) counts as much as a point: the
-        // box would hide the error of one point.
-        let bars = bar_lines
+        .zip(&fig.series)
+        .filter(|(_, s)| s.joined)
+        .map(|(pts, _)| pts);
+    let ink = Ink {
+        markers: series
             .iter()
             .flatten()
-            .filter(|(a, b)| a.0 == b.0 && grown.meets_segment(*a, *b))
-            .count();
-        let lines = pixel_lines
+            .map(|p| chart.backend_coord(p))
+            .collect(),
+        lines: curves
             .iter()
-            .flat_map(|l| l.windows(2))
-            .filter(|w| grown.meets_segment(w[0], w[1]))
-            .count();
-        points + bars + 5 * lines
+            .flatten()
+            .chain(joined)
+            .flat_map(|pts| pts.windows(2))
+            .map(|w| (chart.backend_coord(&w[0]), chart.backend_coord(&w[1])))
+            .collect(),
+        bars: bar_lines.iter().flatten().copied().collect(),
     };
-    let has_bars = bar_lines.iter().any(|l| !l.is_empty());
+    let crowding = |r: &Rect| ink.crowding(r);
+    let has_bars = !ink.bars.is_empty();
     let legend = legend_rows(fig, series, has_bars);
     let legend = if outside.legend {
         legend.in_columns(WIDTH as i32 - 2 * MARGIN)
@@ -428,21 +380,11 @@ fn draw(
         legend
     };
     let legend_size = legend.size();
-    let mut placement = Placement {
-        layout: Layout {
-            title: Some(title_box(fig, margin_right)),
-            axis_labels: axis_label_boxes(fig, &area, x_area as i32),
-            markers: pixel_points.clone(),
-            labels: label_boxes,
-            ..Layout::default()
-        },
-        ..Placement::default()
-    };
+    let mut placement = Placement::default();
     // Legend and notes go into the emptiest corners of the plotting area; where the emptiest
     // is not empty, outside it (the caller draws again with room kept: [`Outside`]).
-    let notes = &notes[..];
-    if !legend.rows.is_empty() {
-        let rect = if outside.legend {
+    let legend_box = (!legend.rows.is_empty()).then(|| {
+        if outside.legend {
             let y1 = HEIGHT as i32 - Rect::INSET / 2 - band_notes;
             let x0 = (WIDTH as i32 - legend_size.0) / 2;
             Rect {
@@ -455,14 +397,13 @@ fn draw(
             let rect = area.emptiest_place(legend_size, None, &crowding);
             placement.legend_crowded = crowding(&rect) > 0;
             rect
-        };
-        draw_legend(root, rect, &legend)?;
-        placement.layout.legend = Some(rect);
-    }
-    if !notes.is_empty() {
+        }
+    });
+    let notes = &notes[..];
+    let notes_box = (!notes.is_empty()).then(|| {
         let note_size = notes_size(notes);
         let has_data = series.iter().any(|s| !s.is_empty());
-        let rect = if outside.notes {
+        if outside.notes {
             let y1 = HEIGHT as i32 - Rect::INSET / 2;
             Rect {
                 x0: area.x0,
@@ -471,17 +412,58 @@ fn draw(
                 y1,
             }
         } else if has_data {
-            let rect = area.emptiest_place(note_size, placement.layout.legend, &crowding);
+            let rect = area.emptiest_place(note_size, legend_box, &crowding);
             placement.notes_crowded = crowding(&rect) > 0
-                || placement.layout.legend.is_some_and(|l| l.overlaps(&rect))
+                || legend_box.is_some_and(|l| l.overlaps(&rect))
                 || rect.x0 < area.x0;
             rect
         } else {
             area.centred(note_size)
-        };
-        draw_notes(root, rect, notes)?;
-        placement.layout.notes = Some(rect);
+        }
+    });
+    // Point labels beside their markers, clear of each other, the markers and those boxes.
+    let labels: Vec<(usize, (i32, i32), &str)> = series
+        .iter()
+        .zip(data.labels)
+        .enumerate()
+        .flat_map(|(i, (pts, ls))| pts.iter().zip(ls).map(move |(p, l)| (i, p, l)))
+        .filter(|(_, _, l)| !l.is_empty())
+        .map(|(i, p, l)| (i, chart.backend_coord(p), l.as_str()))
+        .collect();
+    let spots: Vec<_> = labels.iter().map(|&(_, at, l)| (at, l)).collect();
+    let boxes: Vec<Rect> = legend_box.into_iter().chain(notes_box).collect();
+    let label_boxes = ink.place_labels(&spots, &area, &boxes);
+    for (i, pts) in series.iter().enumerate() {
+        let (marker, color) = (fig.series[i].marker, series_color(i));
+        if fig.series[i].joined && pts.len() > 1 {
+            let style = ShapeStyle::from(&color).stroke_width(1);
+            chart
+                .draw_series(std::iter::once(PathElement::new(pts.clone(), style)))
+                .map_err(drawing)?;
+        }
+        chart
+            .draw_series(pts.iter().map(|&at| Glyph { at, marker, color }))
+            .map_err(drawing)?;
+        let label_style = font(NOTE_PX).color(&color);
+        for ((_, _, l), r) in labels.iter().zip(&label_boxes).filter(|(l, _)| l.0 == i) {
+            root.draw(&Text::new(l.to_string(), (r.x0, r.y0), label_style.clone()))
+                .map_err(drawing)?;
+        }
     }
+    if let Some(rect) = legend_box {
+        draw_legend(root, rect, &legend)?;
+    }
+    if let Some(rect) = notes_box {
+        draw_notes(root, rect, notes)?;
+    }
+    placement.layout = Layout {
+        title: Some(title_box(fig, margin_right)),
+        axis_labels: axis_label_boxes(fig, &area, x_area as i32),
+        legend: legend_box,
+        notes: notes_box,
+        labels: label_boxes,
+        markers: ink.markers,
+    };
     Ok(placement)
 }
 

@@ -1,7 +1,7 @@
 //! Rendering: same figure, same bytes; well-formed SVG; labels, legend, bad points, ranges.
 use super::*;
 use crate::plot::marker::{BarEnd, ErrorBar};
-use crate::plot::style::ERROR_CAP;
+use crate::plot::style::{ERROR_CAP, MARKER_R};
 use crate::plot::{Curve, Marker, Series};
 
 const MU_BAR: &str = "μ\u{304}";

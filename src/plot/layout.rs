@@ -2,6 +2,7 @@
 //! visible pieces, and the emptiest corner for the legend and the notes.
 
 use super::axes::AxisPlan;
+use super::style::MARKER_R;
 
 /// Clips the segment a-b to the rectangle [x0, x1] x [y0, y1] (Liang-Barsky).
 pub(super) fn clip_segment(
@@ -134,6 +135,12 @@ impl Rect {
 
     pub(super) fn contains(&self, (x, y): (i32, i32)) -> bool {
         x >= self.x0 && x <= self.x1 && y >= self.y0 && y <= self.y1
+    }
+
+    /// Whether the box lies over the marker centred at `m`: it comes within the marker's
+    /// radius of the centre.
+    pub(super) fn covers_marker(&self, m: (i32, i32)) -> bool {
+        self.grow(MARKER_R).contains(m)
     }
 
     pub(super) fn meets_segment(&self, a: (i32, i32), b: (i32, i32)) -> bool {

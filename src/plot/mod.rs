@@ -41,7 +41,8 @@
 //! # Files
 //!
 //! The figure and its parts are described here; `draw` renders them, with `axes`, `layout`,
-//! `marker`, `legend`, `style` and `text` beneath it.
+//! `place` (where the point labels, the legend and the notes go), `marker`, `legend`, `style`
+//! and `text` beneath it; `check` says what is wrong with a rendered layout.
 
 mod axes;
 mod check;
@@ -49,6 +50,7 @@ mod draw;
 mod layout;
 mod legend;
 mod marker;
+mod place;
 mod style;
 mod text;
 
@@ -126,7 +128,9 @@ pub struct Series {
     /// Join the points by a line in the series' colour, in their order (e.g. one case
     /// through its grid levels).
     pub joined: bool,
-    /// A short text beside each point (empty: none); missing entries are blank.
+    /// A short text beside each point (empty: none); missing entries are blank. Each goes
+    /// up-right of its marker unless that covers another label, a marker, the legend or the
+    /// notes, or crosses a line where another side would not; then to another side (`place`).
     pub point_labels: Vec<String>,
     /// Half-width e of each point's vertical error bar, in data units of y, in the order of
     /// `points`: the error bar from y - e to y + e (empty: none); missing, zero, negative or
