@@ -4,7 +4,7 @@
 //! finish, directly or grid-sequenced ([`super::sequence`]).
 
 use super::converge::{converge_level, AfterStall, How, Stalled, Tally};
-use super::cycles::{cycle_progress, level_number, StallWindows, State};
+use super::cycles::{cycle_progress, StallWindows, State};
 use super::ladder::CoarseSolution;
 use super::multigrid::Hierarchy;
 use super::nested::Surround;
@@ -83,7 +83,7 @@ pub(super) fn converge(
         }
         starts.push(State::of(&mg, k));
         fmg.push(CoarseSolution {
-            level: level_number(&mg.levels[k]),
+            level: mg.levels[k].grid.level_number(),
             p: mg.levels[k].p.clone(),
             delta: mg.delta,
             residual: None,

@@ -2,7 +2,7 @@
 //! state they leave.
 
 use super::far_field::{FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
-use super::level::{self, LOAD};
+use super::level::LOAD;
 use super::multigrid::Hierarchy;
 use super::stopping::{self, Known, WarmStop};
 use super::{friction, Edge, Params};
@@ -92,7 +92,7 @@ pub(super) fn cycle_progress(
     let (residual, worst_at) = mg.residual_norm(k);
     let level = &mg.levels[k];
     Progress {
-        level: level_number(level),
+        level: level.grid.level_number(),
         count: cycle,
         step: Step::Cycle,
         residual,
@@ -101,11 +101,6 @@ pub(super) fn cycle_progress(
         h_central: level.h_central(),
         worst_at,
     }
-}
-
-/// The level number of a grid (`2^(level+1)` intervals along `X`).
-pub(super) fn level_number(level: &level::LevelFields) -> u32 {
-    level.grid.level_number()
 }
 
 /// V-cycles on level `k` as the top of the hierarchy until they converge, diverge, stall

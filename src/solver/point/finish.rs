@@ -1,7 +1,7 @@
 //! The Newton-Krylov finish on the top level from its current state, the far field refitted
 //! between solves where it is fitted.
 
-use super::cycles::{edge_outputs, level_number, outputs_settled};
+use super::cycles::{edge_outputs, outputs_settled};
 use super::far_field::{FAR_FIELD_ROUNDS, FAR_FIELD_SETTLED};
 use super::multigrid::Hierarchy;
 use super::{level, newton, Edge, Params};
@@ -56,7 +56,7 @@ fn newton_solve(
     let mut delta = mg.delta;
     let handed = mg.take_factor(k);
     let level = &mut mg.levels[k];
-    let number = level_number(level);
+    let number = level.grid.level_number();
     let mut before = level.p.clone();
     let mut steps = 0;
     let (outcome, factor) = newton::iterate(
@@ -74,7 +74,7 @@ fn newton_solve(
             steps += 1;
             history.push(step.residual);
             observe(&Progress {
-                level: level_number(level),
+                level: level.grid.level_number(),
                 count: steps,
                 step: Step::NewtonKrylov {
                     krylov_iterations: step.krylov_iterations,

@@ -22,7 +22,7 @@
 //! level 6; docs/ACCURACY_NOTES.md, "Where a solve's time goes").
 
 use super::converge::{converge_level, How, Tally};
-use super::cycles::{from_converged, level_number, stop_outputs};
+use super::cycles::{from_converged, stop_outputs};
 use super::edge::settle_edge;
 use super::level::LevelFields;
 use super::multigrid::Hierarchy;
@@ -56,7 +56,7 @@ impl CoarseSolution {
     /// Level `k` of `mg` as a rung left it, converged to `residual`.
     fn at(mg: &Hierarchy, k: usize, residual: f64) -> Self {
         CoarseSolution {
-            level: level_number(&mg.levels[k]),
+            level: mg.levels[k].grid.level_number(),
             p: mg.levels[k].p.clone(),
             delta: mg.delta,
             residual: Some(residual),
@@ -69,7 +69,7 @@ impl CoarseSolution {
 pub(super) fn values(mg: &Hierarchy, k: usize, params: &Params) -> LevelValues {
     let [h_central, h_min, sliding, rolling] = stop_outputs(mg, k, params);
     LevelValues {
-        level: level_number(&mg.levels[k]),
+        level: mg.levels[k].grid.level_number(),
         h_central,
         h_min,
         mu_bar_sliding: sliding,
@@ -184,7 +184,7 @@ pub(super) fn output_errors(
         let Some(k) = top.checked_sub(step).filter(|&k| k >= 1) else {
             break;
         };
-        let level = level_number(&mg.levels[k]);
+        let level = mg.levels[k].grid.level_number();
         let start = warm.iter().find(|w| w.level == level);
         if level < MIN_LEVEL {
             break;

@@ -18,7 +18,7 @@ use super::cold::Converged;
 use super::converge::Tally;
 use super::converge::{converge_level, How};
 use super::covering::{self, Covering, Outputs};
-use super::cycles::{from_converged, level_number};
+use super::cycles::from_converged;
 use super::edge::settle_top;
 use super::level::LOAD;
 use super::multigrid::Hierarchy;
@@ -214,7 +214,7 @@ impl Covering for Uniform<'_> {
     }
 
     fn level(&self) -> u32 {
-        level_number(self.mg.finest())
+        self.mg.finest().grid.level_number()
     }
 
     fn may_refine(&self) -> bool {
@@ -371,7 +371,7 @@ impl Covering for Uniform<'_> {
             friction: outputs.friction,
             friction_region: self.params.friction.region,
             info: Info {
-                level: level_number(fine),
+                level: fine.grid.level_number(),
                 method,
                 cycles: self.tally.cycles,
                 newton_steps: self.tally.work.newton_steps,
