@@ -89,7 +89,7 @@ fn newton_solve(
         },
     );
     mg.delta = delta;
-    if number >= newton::HANDED_LEVEL {
+    if newton::HANDED_LEVELS.contains(&number) {
         mg.keep_factor(k, factor);
     }
     outcome

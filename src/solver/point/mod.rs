@@ -65,7 +65,7 @@ pub use warm::Start;
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
 /// can move a result (the revision guard, tests/revision.rs, fails when a result moves and it
 /// is not).
-pub const SOLVER_REVISION: &str = "point-41";
+pub const SOLVER_REVISION: &str = "point-43";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
@@ -103,8 +103,8 @@ pub struct PointSolution {
     pub patches: Vec<(Domain, f64)>,
     /// The final level's outputs tau-extrapolated ([`AccuracyParams::tau_extrapolation`]).
     pub tau: Option<TauExtrapolated>,
-    /// The final level's last Newton-Krylov factor, from level 8 up: a related case started
-    /// from this solution preconditions its first step with it.
+    /// The final level's last Newton-Krylov factor, on level 8 (`newton::HANDED_LEVELS`): a
+    /// related case started from this solution preconditions its first step with it.
     pub factor: Option<HandedFactor>,
     /// Under a top refined across the rolling direction, the level under it refined the same
     /// way, as it converged for the estimate: a member's start of the same

@@ -29,6 +29,21 @@ use crate::solver::gmres::KrylovParams;
 use crate::solver::{gmres, line_search};
 pub(crate) use lagged::KeptFactor;
 use lagged::Preconditioner;
+use std::sync::{Mutex, MutexGuard, PoisonError};
+
+/// Held by the finish of a level-9 solve ([`super::MAX_LEVEL`]) while it iterates: its
+/// factorisations peak at about 13 GB (the 7 x 7 box of [`NewtonParams::finest_box_radius`];
+/// docs/hard-cases.md), so two at once, a sweep's two threads each on a heavy contact, would
+/// pass a 24 GiB machine's memory. They take turns, and none keeps its factor after it
+/// ([`HANDED_LEVELS`]); every other finish runs freely.
+static FINEST_FINISH: Mutex<()> = Mutex::new(());
+
+/// The turn of a finish on `level`: [`FINEST_FINISH`] held on level 9, nothing elsewhere.
+fn finest_turn(level: u32) -> Option<MutexGuard<'static, ()>> {
+    // A finish that panicked while holding it left nothing to repair: the lock guards no data.
+    (level >= super::MAX_LEVEL)
+        .then(|| FINEST_FINISH.lock().unwrap_or_else(PoisonError::into_inner))
+}
 
 /// `|dL/dP|` at every interior node: the Poiseuille stencil and the wedge term's own kernel
 /// coefficient. Dividing the residual by it makes a pressure.
@@ -171,6 +186,7 @@ pub(crate) fn iterate(
     report: &mut dyn FnMut(&LevelFields, &NewtonStep),
 ) -> (NewtonKrylovRun, Option<KeptFactor>) {
     let g = level.grid;
+    let _turn = finest_turn(g.level_number());
     // The row scales are those of this state: a level just interpolated (the next level of
     // a grid sequence, a refined level) holds the coefficients of its last relaxation, or
     // none at all (scaled by its wedge term alone, the first step of a refined level made
@@ -352,11 +368,14 @@ pub(crate) fn iterate(
 /// "The base's factor at level 8").
 pub(crate) const HANDED_ITERATIONS: usize = 100;
 
-/// The level from which a converged finish hands its factor on: at level 8 a member's step
+/// The levels on which a converged finish hands its factor on: at level 8 a member's step
 /// is one factorisation and about 56 GMRES iterations, and the base's factor saves the
 /// factorisation (the M = 19 205 family: 0.88 of its CPU time); at level 7 it cost more
-/// iterations than it saved (the 5P4E family at 40 C, 2 GPa, 7 m/s: 1.31 times the time).
-pub(crate) const HANDED_LEVEL: u32 = 8;
+/// iterations than it saved (the 5P4E family at 40 C, 2 GPa, 7 m/s: 1.31 times the time). Not
+/// on level 9: its factor is gigabytes, and kept with a base's solution beside another
+/// family's level-9 finish (which [`FINEST_FINISH`] lets run only after the first) it took a
+/// two-thread sweep of two such families past 24 GiB (killed for memory at 24.4 GB).
+pub(crate) const HANDED_LEVELS: std::ops::RangeInclusive<u32> = 8..=8;
 
 /// Consecutive steps at the smallest damping after which [`iterate`] gives up.
 const STALLED_STEPS: usize = 3;

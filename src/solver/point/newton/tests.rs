@@ -373,3 +373,19 @@ fn a_handed_factor_preconditions_a_related_solve_to_the_same_solution() {
         fresh.factorisations
     );
 }
+
+/// Level 9's finishes take turns ([`FINEST_FINISH`]); the coarser levels' do not wait.
+#[test]
+fn level_nine_finishes_take_turns() {
+    use crate::solver::point::MAX_LEVEL;
+    assert!(finest_turn(MAX_LEVEL - 1).is_none(), "level 8 runs freely");
+    let turn = finest_turn(MAX_LEVEL).expect("level 9 holds the turn");
+    let other = std::thread::spawn(|| FINEST_FINISH.try_lock().is_ok())
+        .join()
+        .expect("the probe thread");
+    assert!(
+        !other,
+        "a second level-9 finish waits while the first holds the turn"
+    );
+    drop(turn);
+}
