@@ -26,7 +26,7 @@ use super::cycles::{from_converged, stop_outputs};
 use super::edge::settle_edge;
 use super::level::LevelFields;
 use super::multigrid::Hierarchy;
-use super::stopping::Known;
+use super::stopping::{Finer, Known};
 use super::{Params, MIN_LEVEL};
 use crate::solver::output::{LadderStop, LevelValues, Method, Output, OutputErrors, Progress};
 use std::time::Instant;
@@ -124,7 +124,7 @@ fn converge_rung(
     mg: &mut Hierarchy,
     k: usize,
     params: &Params,
-    (method, finer): (Method, [f64; 4]),
+    (method, finer): (Method, Finer),
     warm: Option<&CoarseSolution>,
     observe: &mut dyn FnMut(&Progress),
 ) -> Option<f64> {
@@ -196,7 +196,10 @@ pub(super) fn output_errors(
             stopped = Some(LadderStop::OutsideAtBase { level });
             break;
         }
-        let finer = stop_values(&levels[0]);
+        let finer = Finer {
+            outputs: stop_values(&levels[0]),
+            rolling_of_total: false,
+        };
         let Some(residual) = converge_rung(mg, k, params, (method, finer), start, observe) else {
             stopped = Some(LadderStop::NotConverged { level });
             break;
@@ -244,7 +247,10 @@ pub(super) fn across_rung(
     let square = std::mem::replace(&mut mg.levels[k - 1], LevelFields::new(grid, &mg.model));
     let (delta, sweeps) = (mg.delta, mg.set_coarsest_sweeps(LADDER_COARSEST_SWEEPS));
     let top = values(mg, k, params);
-    let finer = stop_values(&top);
+    let finer = Finer {
+        outputs: stop_values(&top),
+        rolling_of_total: true,
+    };
     let rung = converge_rung(mg, k - 1, params, (method, finer), warm, observe).and_then(|r| {
         let v = values(mg, k - 1, params);
         LadderStop::outside(&v, &top)

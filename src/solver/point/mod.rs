@@ -65,7 +65,7 @@ pub use warm::Start;
 /// Revision of the point-contact numerics: part of every cache key, raised whenever a change
 /// can move a result (the revision guard, tests/revision.rs, fails when a result moves and it
 /// is not).
-pub const SOLVER_REVISION: &str = "point-43";
+pub const SOLVER_REVISION: &str = "point-44";
 
 /// Highest level the solver accepts (1024 x 1024: 8.4 M nodes of working arrays).
 pub const MAX_LEVEL: u32 = 9;
