@@ -76,8 +76,9 @@ pub(crate) fn residual_falls(history: &[f64]) -> bool {
 /// ([`crate::solver::richardson`]). Measured on Fig. 3's 125 cases at level 7: the ladder's
 /// level-6 and level-5 cycles fell from 8.5 and 9.7 per solve to 6.7 and 5.7; over Figs. 1-7
 /// the error estimates moved by 0.02-0.09 % of themselves (median per figure) and 7 % at
-/// most (docs/ACCURACY_NOTES.md). The rolling part keeps the tolerance: a share of the
-/// total's distance let Fig. 1's total `mu-bar` estimates move up to fifteenfold.
+/// most (docs/ACCURACY_NOTES.md). The rolling part keeps the tolerance (of the total
+/// friction on the rung under a top: [`Finer::rolling_of_total`]): a share of the total's
+/// distance let Fig. 1's total `mu-bar` estimates move up to fifteenfold.
 pub(crate) const FINER_DISTANCE_SHARE: f64 = 0.1;
 
 /// What the cycles' stopping rule knows of the solution beyond its own iterates.
