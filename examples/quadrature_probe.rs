@@ -13,14 +13,10 @@
 mod common;
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
-use repro::solver::point::{self, mean_shear_stress, Params, PointSolution, LOADED_FILM_FACTOR};
+use repro::solver::point::{self, mean_shear_stress, PointSolution, LOADED_FILM_FACTOR};
 
 fn solve(problem: &Problem, level: u32) -> Option<PointSolution> {
-    let mut params = Params::for_problem(problem, level);
-    params.accuracy.target = None;
-    params.accuracy.error_levels = 0;
-    params.accuracy.refinement_levels = 0;
-    point::solve(problem, &params, None).ok()
+    point::solve(problem, &common::level_alone(problem, level), None).ok()
 }
 
 /// Sliding mu-bar of `s` summed at every `stride`-th node (the coarser grid's quadrature).

@@ -16,15 +16,12 @@ mod common;
 
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
-use repro::solver::point::{self, Params, PointSolution};
+use repro::solver::point::{self, PointSolution};
 use std::fmt::Write;
 use std::time::Instant;
 
 fn solve(problem: &Problem, level: u32, tau: bool) -> PointSolution {
-    let mut params = Params::for_problem(problem, level);
-    params.accuracy.target = None;
-    params.accuracy.error_levels = 0;
-    params.accuracy.refinement_levels = 0;
+    let mut params = common::level_alone(problem, level);
     params.accuracy.tau_extrapolation = tau;
     point::solve(problem, &params, None).expect("a converged solve")
 }

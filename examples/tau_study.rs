@@ -12,7 +12,7 @@ mod common;
 
 use repro::physics::case::Problem;
 use repro::physics::lubricant::LubricantTable;
-use repro::solver::point::{self, Params};
+use repro::solver::point;
 use std::time::Instant;
 
 fn main() {
@@ -29,10 +29,7 @@ fn main() {
     for name in args {
         let case = common::case_of(&name);
         let problem = Problem::from_case(&case, &lubricants).expect("a valid case");
-        let mut params = Params::for_problem(&problem, level);
-        params.accuracy.target = None;
-        params.accuracy.error_levels = 0;
-        params.accuracy.refinement_levels = 0;
+        let mut params = common::level_alone(&problem, level);
         params.accuracy.tau_extrapolation = !plain;
         let clock = Instant::now();
         let line = match point::solve(&problem, &params, None) {

@@ -1,5 +1,7 @@
-//! The cases of the probes (`order_probe`, `nested_probe`), named on their command lines.
+//! The cases of the probes (`order_probe`, `nested_probe`, ...), named on their command lines,
+//! and the parameters of one level solved alone.
 use repro::physics::case::*;
+use repro::solver::point::Params;
 
 /// `case23` (Fig. 6 case 23: 5P4E, 40 C, 1 GPa, 12 m/s, S 0.5 %, tau0 6 MPa; Roelands,
 /// Dowson-Higginson, Eyring), `d:M:L:SBAR` (Moes groups, circular, Barus, incompressible,
@@ -38,4 +40,17 @@ pub fn case_of(name: &str) -> Case {
         .map(|s| s.parse().unwrap())
         .collect();
     Case::circular(v[0], v[1], v[2])
+}
+
+/// The rule's parameters for `problem` at `level` ([`Params::for_problem`]) without the
+/// accuracy target, the error ladder and the refinement: the level alone, as the tau and
+/// quadrature probes compare it with its neighbours.
+// Not every probe that shares this module calls it.
+#[allow(dead_code)]
+pub fn level_alone(problem: &Problem, level: u32) -> Params {
+    let mut params = Params::for_problem(problem, level);
+    params.accuracy.target = None;
+    params.accuracy.error_levels = 0;
+    params.accuracy.refinement_levels = 0;
+    params
 }
