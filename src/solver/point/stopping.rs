@@ -373,31 +373,44 @@ mod tests {
         assert!(h.settled(5e-4));
     }
 
+    /// Six cycles' outputs `1 + 0.01 / 2^k`: an algebraic error of about 6e-4 after the last,
+    /// above the tolerance 5e-4 and below a tenth of a 1 % distance.
+    fn cycle_values() -> Vec<f64> {
+        (0..6).map(|k| 1.0 + 0.01 * 0.5f64.powi(k)).collect()
+    }
+
+    /// A finer level's value 1 % from the last of [`cycle_values`].
+    fn one_percent_on() -> f64 {
+        1.01 * cycle_values()[5]
+    }
+
+    /// The history of [`cycle_values`], each output alike but the rolling part, `rolling(v)`,
+    /// against `finer` (its outputs, and whether the rolling part is held to the tolerance of
+    /// the total).
+    fn converging(finer: Option<([f64; 4], bool)>, rolling: impl Fn(f64) -> f64) -> OutputHistory {
+        let mut h = OutputHistory::new(&Known {
+            start: None,
+            finer: finer.map(|(outputs, rolling_of_total)| Finer {
+                outputs,
+                rolling_of_total,
+            }),
+        });
+        for v in cycle_values() {
+            h.push([v, v, v, rolling(v)], 1.0);
+        }
+        h
+    }
+
     #[test]
     fn a_coarser_level_is_settled_at_a_share_of_its_distance_to_the_finer_one() {
         // Films and sliding friction 1 % from the finer level's, their algebraic error about
         // 6e-4: above the tolerance 5e-4, below a tenth of the distance (1e-3). Rolling
         // friction not computed (0), or converged alongside.
-        let x: Vec<f64> = (0..6).map(|k| 1.0 + 0.01 * 0.5f64.powi(k)).collect();
-        let known = |finer: Option<[f64; 4]>| Known {
-            start: None,
-            finer: finer.map(|outputs| Finer {
-                outputs,
-                rolling_of_total: false,
-            }),
-        };
-        let history = |finer, rolling: &dyn Fn(f64) -> f64| {
-            let mut h = OutputHistory::new(&known(finer));
-            for v in &x {
-                h.push([*v, *v, *v, rolling(*v)], 1.0);
-            }
-            h
-        };
-        let f = 1.01 * x[5];
+        let f = one_percent_on();
         let none = |_| 0.0;
-        let far = history(Some([f, f, f, f]), &none);
-        let near = history(Some([1.0; 4]), &none);
-        let alone = history(None, &none);
+        let far = converging(Some(([f, f, f, f], false)), none);
+        let near = converging(Some(([1.0; 4], false)), none);
+        let alone = converging(None, none);
         let error = alone.relative_error();
         assert!(error > 5e-4 && error < 1e-3, "{error}");
         assert!(far.settled(5e-4), "a tenth of 1 % allows it");
@@ -406,7 +419,7 @@ mod tests {
             "the tolerance does not"
         );
         // A rolling part keeps the tolerance, however far the finer total.
-        let rolling = history(Some([f, f, f, 1.1 * f]), &|v| 0.1 * v);
+        let rolling = converging(Some(([f, f, f, 1.1 * f], false)), |v| 0.1 * v);
         assert!(
             !rolling.settled(5e-4),
             "rolling friction is held to the tolerance"
@@ -419,20 +432,10 @@ mod tests {
         // away: the films and the sliding part settle on their share of the distance; the
         // rolling part's 6e-4 of itself is 5.5e-5 of the total where it is a tenth of the
         // sliding part, and 5.5e-4 of it where it is ten times the sliding part.
-        let x: Vec<f64> = (0..6).map(|k| 1.0 + 0.01 * 0.5f64.powi(k)).collect();
-        let f = 1.01 * x[5];
-        let history = |rolling_share: f64, rolling_of_total| {
-            let mut h = OutputHistory::new(&Known {
-                start: None,
-                finer: Some(Finer {
-                    outputs: [f, f, f, (1.0 + rolling_share) * f],
-                    rolling_of_total,
-                }),
-            });
-            for v in &x {
-                h.push([*v, *v, *v, rolling_share * v], 1.0);
-            }
-            h
+        let f = one_percent_on();
+        let history = |share: f64, rolling_of_total| {
+            let finer = ([f, f, f, (1.0 + share) * f], rolling_of_total);
+            converging(Some(finer), |v| share * v)
         };
         assert!(
             history(0.1, true).settled(5e-4),
